@@ -540,3 +540,22 @@ def test_undetermined_parameters_are_said_with_their_free_combination_and_no_cor
             "with alpha_L0, cd_min free: no residual changes along it at the optimum)") in res.identifiability.warnings
     text = res.report_text()
     assert "correlation: none (cl_alpha, alpha_L0, cd_min not determined)" in text and "+0.00;" not in text
+
+
+def test_signals_held_leaves_an_ignored_sighup_alone_and_delivers_a_sigterm():
+    # held while ignored (nohup), SIGHUP took the place of a later SIGTERM, which was lost
+    import signal
+
+    from propmap.io.atomic import signals_held
+
+    got = []
+    before = signal.signal(signal.SIGHUP, signal.SIG_IGN), signal.signal(signal.SIGTERM, lambda n, f: got.append(n))
+    try:
+        with signals_held():
+            signal.raise_signal(signal.SIGHUP)
+            signal.raise_signal(signal.SIGTERM)
+            assert got == []  # held
+        assert got == [signal.SIGTERM]
+    finally:
+        signal.signal(signal.SIGHUP, before[0])
+        signal.signal(signal.SIGTERM, before[1])

@@ -54,7 +54,9 @@ def signals_held():
     before = {}
     try:
         for s in (getattr(signal, n) for n in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, n)):
-            if signal.getsignal(s) is not None:  # (None: a handler not installed from Python, which cannot be put back)
+            # (None: a handler not installed from Python, which cannot be put back; SIG_IGN, nohup's SIGHUP: held, it
+            # took the place of a later SIGTERM, which was then lost, a review, stop 100)
+            if signal.getsignal(s) not in (None, signal.SIG_IGN):
                 before[s] = signal.signal(s, hold)
         yield
     finally:
