@@ -477,6 +477,9 @@ def test_torque_change_is_zero_in_hover_and_continuous_where_the_hover_thrust_pe
     assert abs(float(d[0])) < 1e-9 * cq and abs(float(d[1])) < 1e-4 * cq and abs(float(d[2])) < 1e-3 * cq
     assert abs(float(hover.collective[0])) < 1e-9 and abs(np.degrees(float(hover.collective[1]))) < 0.01
     assert float(d[3]) < 0  # (descent feeds the rotor power: the torque at constant thrust falls)
+    assert np.all(hover.falling)  # (all on the stalled side, V = 0 included: its flag was the lowest crossing's)
+    _, _, h = pm.torque_change_at_constant_thrust(apce_8x6, C, 1338.58, 0.0, 0.0, collective=np.radians([-2, 0, 2.0]))
+    assert h.falling.tolist() == [False, True, True]
     for om in (1300.0, 1500.0, 2000.0):  # hover at its own collective: dCQ = 0 (was 1.1e-3 to 2.1e-3)
         assert abs(float(pm.torque_change_at_constant_thrust(apce_8x6, C, om, 0.0, 0.0)[0])) < 1e-9 * cq
     d, _, _ = pm.torque_change_at_constant_thrust(apce_8x6, C, 1100.0, np.array([0.0, 3.0, 6.0, 12.0]), np.pi)

@@ -93,7 +93,10 @@ class TrimResult:
     falling : ndarray of bool, optional
         True where the bounds hold no upward crossing and the solution returned is the first
         downward one: the thrust falls as the collective rises there (a stalled branch;
-        :data:`FALLING_BRANCH`). None: False everywhere.
+        :data:`FALLING_BRANCH`); for the hover reference of
+        :func:`torque_change_at_constant_thrust` (``branch`` :data:`NEAREST_BRANCH`), where
+        the thrust falls as the collective rises at the collective returned. None: False
+        everywhere.
     """
 
     collective: np.ndarray
@@ -473,7 +476,9 @@ def torque_change_at_constant_thrust(
         and falls with the collective), the hover reference is the one nearest the operating
         point's ``collective`` (:data:`NEAREST_BRANCH`, ``hover.branch``): continuous with
         the operating point from hover, where dCQ = 0 (until 2026-12-01 the lowest, on
-        another branch: dCQ 10% of CQ in hover).
+        another branch: dCQ 10% of CQ in hover); its ``falling`` then says where the hover
+        thrust falls as the collective rises at that collective (the stalled side), whether
+        or not a rising crossing exists too.
 
     Raises
     ------
@@ -497,7 +502,7 @@ def torque_change_at_constant_thrust(
 #: the hover reference of :func:`torque_change_at_constant_thrust` where hover makes the thrust at more than one
 #: collective
 NEAREST_BRANCH = ("the collective nearest the operating point's that makes the thrust in hover (continuous with the "
-                  "operating point from hover)")
+                  "operating point from hover; the lowest where the search out from it finds none)")
 #: the first step out from the operating collective in search of the nearest hover crossing [rad], doubled
 #: NEAREST_LEVELS times at most (0.25 deg to 64 deg: beyond any bounds)
 NEAREST_STEP = math.radians(0.25)
@@ -525,7 +530,6 @@ def _hover_nearest(propeller, params, loads, collective, hover: TrimResult, air,
 
     n = T.size
     x = np.array(hover.collective, float).reshape(-1)
-    fell = np.zeros(n, bool) if hover.falling is None else np.array(hover.falling, bool).reshape(-1)
     with flapping_warning_held():
         f0 = f(c0, om, T, tol)
         # each side's nearest bracket [inner, outer] of a sign change, found by steps doubling out from c0
@@ -552,7 +556,10 @@ def _hover_nearest(propeller, params, loads, collective, hover: TrimResult, air,
             nearer = np.abs(root - c0[idx]) < best[idx]
             idx, root = idx[nearer], root[nearer]
             x[idx], best[idx] = root, np.abs(root - c0[idx])
-            fell[idx] = f(left[idx], om[idx], T[idx], tol[idx]) > 0  # (the thrust falls through T* there)
+        # the side of the hover curve each reference lies on, from its slope there (the operating collective's own
+        # crossing, f0 = 0, kept the lowest crossing's flag: a review, stop 100)
+        h = np.full(n, 1e-4)
+        fell = f(np.minimum(x + h, hi), om, T, tol) < f(np.maximum(x - h, lo), om, T, tol)
     hover_loads = rotor_loads(propeller, params, om.reshape(shape), 0.0, 0.0, collective=x.reshape(shape), air=air,
                               discretization=discretization)
     return TrimResult(collective=x.reshape(shape), loads=hover_loads, n_solutions=hover.n_solutions,
