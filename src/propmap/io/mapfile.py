@@ -169,9 +169,16 @@ def to_netcdf_here(ds, path, **kwargs) -> None:
 
     sys.unraisablehook = quiet
     try:
-        ds.to_netcdf(path, engine="netcdf4", compute=False, **kwargs).compute(scheduler="synchronous")
-    except (RuntimeError, PermissionError) as exc:  # (netCDF-C says a full disk as EACCES when it creates the file)
-        failure = exc
+        try:
+            ds.to_netcdf(path, engine="netcdf4", compute=False, **kwargs).compute(scheduler="synchronous")
+        except (RuntimeError, PermissionError) as exc:  # (netCDF-C says a full disk as EACCES creating the file)
+            # (its words only: the exception's traceback held the failed file open, its clean-up then failing
+            # after the hook was back, on a real full disk: a review, stop 100)
+            failure = (exc.errno, exc.strerror, exc.filename) if isinstance(exc, PermissionError) else str(exc)
+        if failure is not None:
+            import gc
+
+            gc.collect()  # (the failed file closed now, its space given back, its clean-up's failure quiet)
     finally:
         sys.unraisablehook = hook
     if failure is None:
@@ -186,8 +193,8 @@ def to_netcdf_here(ds, path, **kwargs) -> None:
         free = None
     if free is not None and free < ds.nbytes + 2**20:
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(folder)) from None
-    if isinstance(failure, PermissionError):
-        raise failure
+    if isinstance(failure, tuple):
+        raise PermissionError(*failure)
     raise OSError(errno.EIO, f"the netCDF library could not write the map ({failure})", str(path)) from None
 
 
