@@ -174,7 +174,8 @@ def to_netcdf_here(ds, path, **kwargs) -> None:
         except (RuntimeError, PermissionError) as exc:  # (netCDF-C says a full disk as EACCES creating the file)
             # (its words only: the exception's traceback held the failed file open, its clean-up then failing
             # after the hook was back, on a real full disk: a review, stop 100)
-            failure = (exc.errno, exc.strerror, exc.filename) if isinstance(exc, PermissionError) else str(exc)
+            failure = ((exc.errno, exc.strerror) + ((exc.filename,) if exc.filename is not None else ())
+                       if isinstance(exc, PermissionError) else str(exc))
         if failure is not None:
             import gc
 
