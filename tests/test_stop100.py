@@ -503,7 +503,7 @@ def test_a_joint_fit_of_one_data_set_is_fit_loads_whatever_its_weight():
     d = d.subset(np.isin(d.group, ["static_pg0811", "pg0812", "pg0814", "pg0816"]))
     o = FitOptions(names=("cl_alpha", "alpha_L0", "cd_min", "cd2"))  # the prior on (default)
     a = fit_loads(d, prop, options=o)
-    for w in (None, [10.0], [1e160]):
+    for w in (None, [10.0], [1e160], [1e308]):
         b = fit_loads_joint([(d, prop)], weights=w, options=o)
         np.testing.assert_allclose(b.x, a.x, rtol=1e-6)
         np.testing.assert_allclose(b.identifiability.std_error, a.identifiability.std_error, rtol=1e-6)

@@ -521,7 +521,9 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
         raise ValueError(f"datasets: {rows} fitted load values cannot identify {len(names)} parameters")
     makers, notes, airs = [], [], []
     n_all = sum(data.n for data, _ in datasets)
-    scale = [math.sqrt(wk * n_all / (float(np.sum(w)) * data.n)) for (data, _), wk in zip(datasets, w)]
+    share = w / np.max(w)  # (then by its sum: 1e307 and two of 1e308 overflowed w N and W, a review)
+    share = share / np.sum(share)
+    scale = [math.sqrt(sk * n_all / data.n) for (data, _), sk in zip(datasets, share)]
     for k, ((data, prop), sk) in enumerate(zip(datasets, scale)):
         data_air_k, note = data_air(data, air, base.air)  # (each data set at the density it logged)
         airs.append(data_air_k)
