@@ -69,6 +69,15 @@ def test_validate_in_other_air_does_not_call_the_errors_the_fits_residual(capsys
     assert "in-sample (the fit's residual, not a prediction)" in capsys.readouterr().out
 
 
+def test_validate_source_in_other_air_does_not_call_the_errors_the_fits_residual(capsys, shared_data):
+    files = sorted(str(f) for f in (shared_data / "uiuc_propdb" / "v1").glob("apce_8x6_*.txt"))
+    assert main(["validate", *files, "--prop", "apce_8x6", "--altitude-m", "3000"]) == 0
+    out = capsys.readouterr().out
+    assert "in-sample" not in out and "compared here in other air: neither the fit's residual nor a prediction" in out
+    assert main(["validate", *files, "--prop", "apce_8x6"]) == 0
+    assert "in-sample (the fit's residual)" in capsys.readouterr().out
+
+
 def test_cross_validation_figure_cites_apc_geometry_and_labels_ticks_plainly(tmp_path, monkeypatch):
     # the title cited the UIUC volumes only (29 propellers take APC's PE0 geometry), and a few
     # propellers' 2-9% errors ran the default's minor labels 2x10^0 3x10^0 ... into each other

@@ -255,8 +255,11 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     from ..validation import load_errors
     from ._sources import file_air, read_sources
 
-    params, air, label = load_params(params_spec, prop_spec, option="--params")
-    air = resolve_air(air, air_choice)
+    params, set_air, label = load_params(params_spec, prop_spec, option="--params")
+    air = resolve_air(set_air, air_choice)
+    # (the fitted groups' errors in other air than the set's are no residual: validate PROP said so, SOURCE did not,
+    # a review, stop 100)
+    other_air = bool(air_choice.options_given()) and air != set_air
     data, prop, _, what = read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs, min_points=1)
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
@@ -289,7 +292,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
                    "n_blades": prop.n_blades, "data": [str(s) for s in sources], "citation": citation,
                    "air": air_record(air), "rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound})
         return
-    _print_errors(e, in_fit, every, what, prop, label, air)
+    _print_errors(e, in_fit, every, what, prop, label, air, other_air)
     if citation:
         click.echo(f"Data: {citation}")
 
@@ -349,9 +352,11 @@ def _inplane_words(keys) -> str:
     return f"; {' and '.join(which)} where the rotor has an in-plane airspeed" if which else ""
 
 
-def _print_errors(e: dict, in_fit: dict, every: list[str], what: str, prop, label: str, air) -> None:
+def _print_errors(e: dict, in_fit: dict, every: list[str], what: str, prop, label: str, air,
+                  other_air: bool = False) -> None:
     """validate's table of the coefficients' errors (all points, by group, by state), with the
-    groups' in-sample labels and the rms errors in SI."""
+    groups' in-sample labels (the fitted ones' errors no residual where ``other_air``: the air
+    options gave other air than the set's) and the rms errors in SI."""
     keys = list(e["overall"])
     click.echo(f"{what} ({e['n_points']} points) against {prop.name} ({prop.n_blades} blades, D = "
                f"{prop.diameter:.4g} m), params {label}; air {air_label(air)}")
@@ -378,8 +383,10 @@ def _print_errors(e: dict, in_fit: dict, every: list[str], what: str, prop, labe
         click.echo("the 'all points' row mixes the fit's own groups with others: read the rows by group")
     if in_fit:
         fitted = sorted(g for g, v in in_fit.items() if v == "fitted")
+        residual = ("fitted in the set's own air, compared here in other air: neither the fit's residual nor a "
+                    "prediction" if other_air else "in-sample (the fit's residual)")
         click.echo(f"{label} was fitted to {'part of ' if part else ''}this data: "
-                   + (f"{', '.join(fitted)} in-sample (the fit's residual), " if fitted else "")
+                   + (f"{', '.join(fitted)} {residual}, " if fitted else "")
                    + "held out: " + (", ".join(sorted(g for g, v in in_fit.items() if v == "held out")) or "none"))
     si = ", ".join(f"{k} {e['overall'][k]['rms_si']:.4g} {'N m' if k in ('torque', 'rolling_moment') else 'N'}"
                    for k in keys
