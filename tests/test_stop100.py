@@ -571,3 +571,9 @@ def test_signals_held_leaves_an_ignored_sighup_alone_and_delivers_a_sigterm():
     finally:
         signal.signal(signal.SIGHUP, before[0])
         signal.signal(signal.SIGTERM, before[1])
+
+
+def test_map_names_out_for_a_name_too_long(tmp_path, capsys):
+    # written_path (the sidecar's place) met the system's refusal first, unnamed
+    assert main(["map", "apce_8x6", *GRID, "--out", str(tmp_path / ("a" * 300 + ".nc"))]) == 2
+    assert "propmap: error: --out: File name too long" in capsys.readouterr().err

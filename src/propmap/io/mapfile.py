@@ -385,8 +385,11 @@ def written_path(path) -> Path:
     Path
     """
     path = as_path(path)
-    if path.is_symlink() and path.exists():
-        return Path(os.path.realpath(path))
+    try:
+        if path.is_symlink() and path.exists():
+            return Path(os.path.realpath(path))
+    except OSError:  # (a name too long for the system: the caller's checks name it, `--out: File name too long`)
+        pass
     return path
 
 
