@@ -145,10 +145,12 @@ def test_validate_all_prints_the_fractions_within_and_the_signed_median_per_volu
     assert s["ct_within"] == {"3%": 0.25, "5%": 0.5, "10%": 0.75}
     assert s["ct_signed_median"] == pytest.approx(0.01)
     assert s["ct"] == VA.summarize([0.02, 0.04, 0.08, 0.2])
+    unscored = {"propeller": "u", "volume": 1, "family": "f", "blind": {"rms_ct": None, "rms_cp": None, "bias_ct": 0.0}}
+    assert VA._summaries([*rows, unscored], ["blind"])["blind"]["ct_within"] == s["ct_within"]  # (no miss)
     VA._print_within({"vol. 1": {"blind": s}}, ["blind"])
     out = capsys.readouterr().out.splitlines()
     assert out == ["  vol. 1     within 3/5/10% of static CT: blind 25/50/75%",
-                   "  vol. 1     median signed CT error (model - measured, of static CT): blind +1.0%"]
+                   "  vol. 1     median signed CT error (model - measured, of static CT): blind +1.00%"]
 
 
 def test_validate_and_fit_name_the_prop_option_and_the_file_options_as_given(tmp_path, capsys, shared_data):
@@ -432,6 +434,8 @@ def test_fit_options_refuse_a_population_and_fields_the_fit_cannot_use():
         given = {k: v for k, v in {**pop, **change}.items() if v is not None}
         with pytest.raises(ValueError, match=match):
             FitOptions(population=given)
+    with pytest.raises(ValueError, match=r"population\['names'\] must be parameter names"):
+        FitOptions(population={**pop, "names": None})  # (a TypeError from iterating it, a review)
     FitOptions(population=dict(pop))  # the shipped prior passes
     for field in ("label", "air", "inflow", "swirl", "compressibility"):
         with pytest.raises(ValueError, match=rf"bounds: unknown parameter '{field}'"):

@@ -202,7 +202,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         None: local, one chunk at a time (the model call itself uses every core); a
         ``dask.distributed`` scheduler address or Client: the chunks run on its workers.
     progress : bool
-        A progress bar (tqdm) over the chunks.
+        A progress bar over the chunks, on standard error where it is a terminal (tqdm; on a
+        dask cluster, dask's text bar).
     n_check : int
         Random off-grid points at which the full model checks the interpolation
         (:func:`check_map`); 0 skips the check.
@@ -298,6 +299,14 @@ def _warn_coverage(propeller, params, air, params_label: str, om, V, b) -> None:
         warnings.warn(line, CoverageWarning, stacklevel=3)
 
 
+def _stderr_is_terminal() -> bool:
+    """Whether standard error is a terminal (False where it is None or closed)."""
+    try:
+        return bool(sys.stderr.isatty())
+    except (AttributeError, ValueError, OSError):
+        return False
+
+
 def _compute(parts, scheduler, progress: bool):
     """build_map's solve of the grid's chunks: one at a time in this process (the model call is
     parallel over the cores already, and two concurrent numba parallel regions would compete for
@@ -334,7 +343,7 @@ def _compute(parts, scheduler, progress: bool):
         client = scheduler_client(scheduler) if own else scheduler
         try:
             future = client.compute(parts)
-            if progress and sys.stderr.isatty():  # (as the local bar: on a terminal's stderr only; distributed's
+            if progress and _stderr_is_terminal():  # (as the local bar: on a terminal's stderr only; distributed's
                 import contextlib  # text bar writes to stdout, which broke map --json's output: an audit, stop 100)
 
                 from distributed import progress as dist_progress

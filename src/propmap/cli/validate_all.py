@@ -255,9 +255,11 @@ def _summaries(rows, keys) -> dict:
     out = {}
     for k in keys:
         ct = np.array([r[k]["rms_ct"] for r in rows], float)
+        scored = ct[np.isfinite(ct)]  # (a propeller not scored, None, is no miss: a review, stop 100)
         signed = [r[k].get("bias_ct") for r in rows]
         out[k] = {"ct": summarize(ct), "cp": summarize([r[k]["rms_cp"] for r in rows]),
-                  "ct_within": {f"{100 * w:g}%": float(np.mean(ct <= w)) for w in WITHIN},
+                  "ct_within": {f"{100 * w:g}%": float(np.mean(scored <= w)) if scored.size else None
+                                for w in WITHIN},
                   "ct_signed_median": None if None in signed else float(np.median(signed))}
     return out
 
@@ -364,9 +366,10 @@ def _print_within(by_volume: dict, protos) -> None:
         if not all("ct_within" in s[k] for k in protos):
             continue
         click.echo(f"  {g:<10} within {'/'.join(f'{100 * w:g}' for w in WITHIN)}% of static CT: " + "  ".join(
-            f"{k} {'/'.join(f'{100 * f:.0f}' for f in s[k]['ct_within'].values())}%" for k in protos))
+            f"{k} {'/'.join('n/a' if f is None else f'{100 * f:.0f}' for f in s[k]['ct_within'].values())}%"
+            for k in protos))
         click.echo(f"  {g:<10} median signed CT error (model - measured, of static CT): " + "  ".join(
-            f"{k} " + ("n/a" if s[k]["ct_signed_median"] is None else f"{100 * s[k]['ct_signed_median']:+.1f}%")
+            f"{k} " + ("n/a" if s[k]["ct_signed_median"] is None else f"{100 * s[k]['ct_signed_median']:+.2f}%")
             for k in protos))
 
 

@@ -221,8 +221,8 @@ def check_population(population) -> None:
         raise ValueError(f"population must be None or a dict with {', '.join(need)} (io.calibration.population), "
                          f"got {population!r:.60}")
     names = population["names"]
-    if isinstance(names, str) or not all(isinstance(n, str) for n in names) or len(set(names)) != len(names) \
-            or not names:
+    if isinstance(names, str) or not isinstance(names, (list, tuple)) or not all(isinstance(n, str) for n in names) \
+            or len(set(names)) != len(names) or not names:
         raise ValueError(f"population['names'] must be parameter names (str), each once, got {names!r:.60}")
     try:
         cov = np.asarray(population["covariance"], float)
