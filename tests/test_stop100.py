@@ -270,7 +270,7 @@ def test_a_full_disk_under_a_netcdf_write_is_said_as_such(small_map, tmp_path, m
 
     import xarray as xr
 
-    from propmap.io.mapfile import to_netcdf_here
+    from propmap.io.netcdf_write import to_netcdf_here
 
     _, _, ds = small_map
 

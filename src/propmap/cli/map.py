@@ -407,7 +407,8 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
     from ..io.atomic import signals_held
     from ..io.calibration import default_params
     from ..io.catalogue import catalogue
-    from ..io.mapfile import NETCDF_LOCK, to_netcdf_here
+    from ..io.mapfile import NETCDF_LOCK
+    from ..io.netcdf_write import to_netcdf_here
     from ..maps import build_map
 
     out.parent.mkdir(parents=True, exist_ok=True)
