@@ -19,13 +19,11 @@ def refuse_copies(paths, option: str, consequence: str) -> None:
     <consequence>``; a path that cannot be read, as ``option: X: no such file``."""
     from ..io.inputs import first_copy, short_path
 
-    for p in paths:
-        try:
-            os.stat(p)
-        except OSError as exc:  # (named as the option's, as its reader would)
-            why = "no such file" if isinstance(exc, FileNotFoundError) else (exc.strerror or str(exc)).lower()
-            raise InputError(f"{option}: {short_path(p)}: {why}") from None
-    copy = first_copy(paths)
+    try:
+        copy = first_copy(paths)
+    except OSError as exc:  # (named as the option's, as its reader would)
+        why = "no such file" if isinstance(exc, FileNotFoundError) else (exc.strerror or str(exc)).lower()
+        raise InputError(f"{option}: {short_path(exc.filename)}: {why}") from None
     if copy is not None:
         p, what, earlier = copy
         raise InputError(f"{option}: {short_path(p)} is {what} {short_path(earlier)}: {consequence}")

@@ -165,8 +165,9 @@ def _main(argv: list[str] | None) -> int:
     previous = {}
     # SIGHUP (a closed terminal, a dropped ssh session) as SIGTERM where it is not ignored (nohup): it killed a run
     # without a word and left map --all's parts folder behind (an audit, stop 100)
-    stops = [signal.SIGTERM] + [s for s in (getattr(signal, "SIGHUP", None),)
-                                if s is not None and signal.getsignal(s) is signal.SIG_DFL]
+    stops = [signal.SIGTERM]
+    if hasattr(signal, "SIGHUP") and signal.getsignal(signal.SIGHUP) is signal.SIG_DFL:
+        stops.append(signal.SIGHUP)
     try:
         for s in stops:
             previous[s] = signal.signal(s, _on_sigterm)

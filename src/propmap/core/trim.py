@@ -533,7 +533,7 @@ def _hover_nearest(propeller, params, loads, collective, hover: TrimResult, air,
     with flapping_warning_held():
         f0 = f(c0, om, T, tol)
         # each side's nearest bracket [inner, outer] of a sign change, found by steps doubling out from c0
-        brackets = {}
+        brackets = []
         for sgn in (-1.0, 1.0):
             a, b, found, inner = np.empty(n), np.empty(n), f0 == 0, c0
             for k in range(NEAREST_LEVELS):
@@ -543,10 +543,10 @@ def _hover_nearest(propeller, params, loads, collective, hover: TrimResult, air,
                 inner = outer
                 if found.all():
                     break
-            brackets[sgn] = (np.minimum(a, b), np.maximum(a, b), found & (f0 != 0))
+            brackets.append((np.minimum(a, b), np.maximum(a, b), found & (f0 != 0)))
         best = np.where(f0 == 0, 0.0, np.inf)
         x[f0 == 0] = c0[f0 == 0]
-        for left, right, ok in brackets.values():
+        for left, right, ok in brackets:
             if not ok.any():
                 continue
             res = elementwise.find_root(f, (left[ok], right[ok]), args=(om[ok], T[ok], tol[ok]),
@@ -558,8 +558,7 @@ def _hover_nearest(propeller, params, loads, collective, hover: TrimResult, air,
             x[idx], best[idx] = root, np.abs(root - c0[idx])
         # the side of the hover curve each reference lies on, from its slope there (the operating collective's own
         # crossing, f0 = 0, kept the lowest crossing's flag: a review, stop 100)
-        h = np.full(n, 1e-4)
-        fell = f(np.minimum(x + h, hi), om, T, tol) < f(np.maximum(x - h, lo), om, T, tol)
+        fell = f(np.minimum(x + 1e-4, hi), om, T, tol) < f(np.maximum(x - 1e-4, lo), om, T, tol)
     hover_loads = rotor_loads(propeller, params, om.reshape(shape), 0.0, 0.0, collective=x.reshape(shape), air=air,
                               discretization=discretization)
     return TrimResult(collective=x.reshape(shape), loads=hover_loads, n_solutions=hover.n_solutions,

@@ -417,6 +417,13 @@ POOR_FIT = 0.25
 CATALOGUE_RMS = "0.012-0.104"
 
 
+def _poor_fit(rms: float) -> str:
+    """The words of a load fit's rms data residual beyond POOR_FIT (fit_loads' and each propeller's
+    of fit_loads_joint)."""
+    return (f"the fit leaves an rms residual of {rms:.3g} ({rms:.0%} of the measured coefficients' rms; the "
+            f"catalogue's fits leave {CATALOGUE_RMS})")
+
+
 def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
     """The fit with each data residual's point named (``extra["residual_labels"]``: the quantity,
     the group, the rpm, the airspeed and, in data at incidence, the incidence; the residual vector stacks
@@ -435,8 +442,7 @@ def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
     warns = list(result.warnings)
     if rms > POOR_FIT:  # (first, after an evaluation limit: the rest is of a model that does not describe the data)
         warns.insert(int(result.hit_max_nfev),
-                     f"the fit leaves an rms residual of {rms:.3g} ({rms:.0%} of the measured coefficients' rms; the "
-                     f"catalogue's fits leave {CATALOGUE_RMS}): the model does not describe these data as one "
+                     f"{_poor_fit(rms)}: the model does not describe these data as one "
                      "propeller's (" + ("the fit did not converge, " if result.hit_max_nfev else "")
                      + "two propellers or set-ups in one file, another geometry, a unit slip?)")
     if out and r.size >= 10:
@@ -561,9 +567,8 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     result.extra["residual_autocorrelation"] = lag1_autocorrelation(r, keys) if r.size else None
     # (fit_loads' poor-fit warning, each propeller's own: a propeller's thrust off by a factor of 10 left its rms
     # residual 0.338 without a word, the weighted headline 0.042: an API audit, stop 100)
-    poor = [f"{p['propeller']}: the fit leaves an rms residual of {p['rms_residual']:.3g} ({p['rms_residual']:.0%} of "
-            f"the measured coefficients' rms; the catalogue's fits leave {CATALOGUE_RMS}): the model does not describe "
-            "its data with the others' set (another geometry, a unit slip?)"
+    poor = [f"{p['propeller']}: {_poor_fit(p['rms_residual'])}: the model does not describe its data with the "
+            "others' set (another geometry, a unit slip?)"
             for p in result.extra["per_propeller"] if p["rms_residual"] > POOR_FIT]
     if poor:
         result = replace(result, warnings=(*poor, *result.warnings))

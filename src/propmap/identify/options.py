@@ -160,9 +160,16 @@ def _check_lift_model(base: SectionParams, options: "FitOptions") -> None:
 
 def refuse_unused_options(options: "FitOptions", fit: str, *, body_lift: bool = False,
                           directions: bool = False) -> None:
-    """Refuse ``options.body_lift`` and ``options.directions`` in a fit that does not use them
-    (``body_lift``, ``directions``: True where ``fit`` does), each ignored without a word until
-    stop 100 (an API audit).
+    """Refuse ``options.body_lift`` and ``options.directions`` in a fit that does not use them,
+    each ignored without a word until stop 100 (an API audit).
+
+    Parameters
+    ----------
+    options : FitOptions
+    fit : str
+        The fit's name, for the message (``"fit_loads"``).
+    body_lift, directions : bool
+        True where ``fit`` uses that option.
 
     Raises
     ------
@@ -210,6 +217,13 @@ def check_population(population) -> None:
     row per name), ``sigma_data`` (a finite number > 0) and ``source`` (text). Each was met
     inside the fit as a KeyError, SciPy's "not finite", a LinAlgError or an IndexError, and a
     negative sigma_data was taken (an API audit, stop 100).
+
+    Parameters
+    ----------
+    population : dict
+        As :func:`propmap.io.calibration.population` returns it: ``names`` (list or tuple of
+        str, k of them), ``covariance`` (k x k, SI, angles in rad), ``sigma_data`` [-],
+        ``source`` (text).
 
     Raises
     ------
