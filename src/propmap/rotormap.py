@@ -15,7 +15,7 @@ import threading
 import numpy as np
 
 from .core.units import RPM
-from .core._interp import HUB_WORDS, snap_airspeed, snap_airspeed_scalar, snap_incidence, snap_incidence_scalar
+from .core._interp import OutOfGridError, snap_airspeed, snap_airspeed_scalar, snap_incidence, snap_incidence_scalar
 from .core._numbers import SEED_MAX, integer
 from .core._plain import SPINS, plain_float, plain_vector
 from .core.geometry import broadcast_readonly, has_bool, refuse_masked
@@ -271,8 +271,8 @@ class RotorMap:
                     lo, hi = f"{ax[0]:g}", f"{ax[-1]:g}"
                     if float(lo) <= v <= float(hi):  # (rounded, the ends would hold the value: shown whole)
                         lo, hi = repr(float(ax[0])), repr(float(ax[-1]))
-                    raise ValueError(f"{name} = {v!r} is outside the map's grid [{lo}, {hi}] {unit} "
-                                     "(out_of_grid='clip' or 'nan' to flag instead)")
+                    raise OutOfGridError(name, f"{name} = {v!r} is outside the map's grid [{lo}, {hi}] {unit} "
+                                               "(out_of_grid='clip' or 'nan' to flag instead)")
         return q
 
     def loads(self, omega, airspeed, incidence, *, out_of_grid: str = "raise") -> MapLoads:
@@ -384,11 +384,10 @@ class RotorMap:
                              f"(shape {speed.shape}: velocity {np.shape(velocity)}, axis {np.shape(axis)})") from None
         try:
             ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
-        except ValueError as exc:  # (the airspeed and incidence are no arguments here: named by what gives them)
-            text = str(exc)
-            if text.startswith(("airspeed = ", "incidence = ")):
-                raise ValueError(HUB_WORDS + text) from None
-            raise
+        except OutOfGridError as exc:  # (the airspeed and incidence are no arguments here: named by what gives them)
+            if exc.quantity == "omega":
+                raise
+            raise OutOfGridError(exc.quantity, exc.detail, "velocity and axis give the hub's ") from None
         _check_spin(s, np.shape(ml.thrust))
         force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s,
                                        side_force=ml.side_force, pitching_moment=ml.pitching_moment)

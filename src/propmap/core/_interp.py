@@ -99,9 +99,18 @@ def _cubic_weights(ax, x):
             h10 * a3 + h11 * b3)
 
 
-#: how RotorMap.wrench names the hub's airspeed and incidence outside the grid, quantities the caller
-#: gives as velocity and axis (VehicleMap names the rotor and its own arguments in their place)
-HUB_WORDS = "velocity and axis give the hub's "
+class OutOfGridError(ValueError):
+    """A map query outside the grid under ``out_of_grid="raise"`` (RotorMap.loads and wrench,
+    VehicleMap.wrench): its ``quantity`` ("omega", "airspeed" or "incidence") and ``detail`` (the
+    value and the grid's range), so that a caller that derived the quantity from its own
+    arguments can say it in their terms (RotorMap.wrench: the velocity and axis; VehicleMap:
+    the rotor and its velocity, angular_velocity and wind) without reading the message."""
+
+    def __init__(self, quantity: str, detail: str, given: str = "") -> None:
+        super().__init__(f"{given}{detail}")
+        self.quantity, self.detail = quantity, detail
+
+
 #: an airspeed up to this [m/s] is still air for a map whose airspeed axis starts at 0: any incidence is on its
 #: incidence axis (the loads at 1e-6 m/s differ from hover's by far less than the interpolation's error)
 HOVER_SPEED = 1e-6

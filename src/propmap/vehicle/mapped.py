@@ -26,7 +26,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core._interp import HUB_WORDS, vehicle_point
+from ..core._interp import OutOfGridError, vehicle_point
 from ..core._plain import plain_vector
 from ..core._numbers import checked
 from ..core.body import body_drag_force
@@ -231,11 +231,11 @@ class VehicleMap:
         ``rotor_omega``, and the hub's airspeed and incidence come from ``velocity``,
         ``angular_velocity`` and ``wind`` (said as the map's own quantities, no rotor named,
         until stop 100: an audit)."""
-        text = str(exc)
-        if text.startswith("omega"):
-            return ValueError(f"rotor_omega: rotor {k}'s {text}")
-        if text.startswith(HUB_WORDS):
-            return ValueError(f"velocity, angular_velocity and wind give rotor {k}'s hub {text[len(HUB_WORDS):]}")
+        if isinstance(exc, OutOfGridError) and exc.quantity != "omega":
+            given = f"velocity, angular_velocity and wind give rotor {k}'s hub "
+            return OutOfGridError(exc.quantity, exc.detail, given)
+        if str(exc).startswith("omega"):  # (outside the grid, or below 0)
+            return ValueError(f"rotor_omega: rotor {k}'s {exc}")
         return exc
 
     def _step(self, air_v: list, w: list, om: list, out_of_grid: str):
