@@ -15,7 +15,7 @@ PE0 geometry). Writes benchmarks/results/maps.json atomically and prints it.
   system compiler at -O2 (ns per call over 10^6 calls of varying points).
 * Size: the default map's netCDF file (zlib level 4).
 * Lookups and the C function with the multilinear interpolation, then with the cubic
-  (the default of both).
+  (the Python evaluator's default; `map --format c` defaults to the multilinear).
 * Density: max and rms interpolation error (T, Q over static values, D over the largest
   drag) outside flagged cells, on 2,000 fresh points, for grids from coarse to fine, for
   the multilinear and the cubic interpolation.
@@ -23,6 +23,7 @@ PE0 geometry). Writes benchmarks/results/maps.json atomically and prints it.
 
 from __future__ import annotations
 
+import argparse
 import json
 import math
 import shutil
@@ -260,5 +261,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--quick", action="store_true")
+    parser.parse_args()  # (main reads its flags from sys.argv)
     sys.path.insert(0, str(Path(__file__).parent))
     main()

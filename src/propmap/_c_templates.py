@@ -64,6 +64,7 @@ TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
 #define {PREFIX}_N0 {n0}
 #define {PREFIX}_N1 {n1}
 #define {PREFIX}_N2 {n2}
+/* the rotor radius R [m] */
 #define {PREFIX}_RADIUS {radius!r}
 /* 1 / the step of a uniform axis, -1 / log(ratio) of a geometric one (cells found by arithmetic),
    0 for another (bisection) */
@@ -71,10 +72,12 @@ TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
 #define {PREFIX}_U1 {u1}
 #define {PREFIX}_U2 {u2}
 
+/* the axes: omega [rad/s], airspeed [m/s], incidence [rad] */
 static const double {prefix}_omega[{n0}] = {{{ax0}}};
 static const double {prefix}_airspeed[{n1}] = {{{ax1}}};
 static const double {prefix}_incidence[{n2}] = {{{ax2}}};
-/* loads / ((omega R)^2 + V^2), index ((i0 * N1 + i1) * N2 + i2) * 4 + k, k: T, D, Q, M_R */
+/* loads / ((omega R)^2 + V^2) (T and D in N / (m/s)^2, Q and M_R in N m / (m/s)^2),
+   index ((i0 * N1 + i1) * N2 + i2) * 4 + k, k: T, D, Q, M_R */
 static const {ctype} {prefix}_table[{ntab}] = {{
 {table}
 }};

@@ -10,6 +10,7 @@ out-of-grid policies; no allocation, no global state, only <math.h> (for NAN).
 from __future__ import annotations
 
 import hashlib
+import os
 import re
 import textwrap
 from pathlib import Path
@@ -118,7 +119,8 @@ def _reserved(identifier: str) -> str | None:
 
 
 def c_prefix(path, name: str | None = None) -> str:
-    """The C identifier prefix of a header: ``name``, or ``pm_<file stem>`` (lower case).
+    """The C identifier prefix of a header: ``name``, or ``pm_<file stem>`` (lower case; runs of
+    underscores made one and none at the end, ``pm`` for a stem with no letter or digit).
 
     Parameters
     ----------
@@ -140,17 +142,27 @@ def c_prefix(path, name: str | None = None) -> str:
         digits, underscores); or a name the header would define with it
         (``<prefix>_loads``, ``<PREFIX>_NAN``, ...) is reserved to the C library
         (``fp`` gives ``FP_NAN``, <math.h>'s; ``_x`` a file-scope name with an
-        underscore): the message names them and the rule.
+        underscore) or to C++ (a double underscore: ``a__b``, or a prefix ending in ``_``):
+        the message names them and the rule.
+    TypeError
+        ``path`` not a str or os.PathLike (where ``name`` is None).
     """
     if name is not None and not isinstance(name, str):
         raise ValueError(f"the C name prefix must be a string, got {name!r:.60}")
     if name == "":
         raise ValueError("the C name prefix is empty")
-    prefix = name or "pm_" + re.sub(r"\W", "_", as_path(path).stem).lower()
+    if name is None:  # (runs of underscores made one, and none at the end: "pm__h" of ".h" is C++'s)
+        stem = re.sub(r"_+", "_", re.sub(r"\W", "_", as_path(path).stem)).strip("_").lower()
+        prefix = "pm_" + stem if stem else "pm"
+    else:
+        prefix = name
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", prefix):
         raise ValueError(f"the C name prefix must be a C identifier (ASCII letters, digits, underscores), "
                          f"got {prefix!r:.80}")
     defined = [f"{prefix}_{n}" for n in _C_NAMES] + [f"{prefix.upper()}_{m}" for m in _C_MACROS]
+    if "__" in defined[0]:  # (the header is valid C++11 too, where every name with "__" is reserved: an audit)
+        raise ValueError(f"the C name prefix {prefix!r} would define {defined[0]}: C++ reserves every identifier "
+                         "that contains a double underscore; choose a prefix without one and not ending in '_'")
     clash = [(ident, _reserved(ident)) for ident in defined if _reserved(ident)]
     if clash:
         names = ", ".join(ident for ident, _ in clash[:3]) + (", ..." if len(clash) > 3 else "")
@@ -176,14 +188,26 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
 
     Raises
     ------
-    ValueError, TypeError
+    ValueError
+        An empty ``path``, or one that is (or links to) the map's own file or its sidecar
+        (``RotorMap.open``'s: it would be overwritten); as :func:`c_header_text`.
+    TypeError
         As :func:`c_header_text`.
     OSError
         The file cannot be written.
     """
     from .io.atomic import atomic_write
+    from .io.mapfile import sidecar_path
 
+    if isinstance(path, (str, os.PathLike)) and not os.fspath(path):
+        raise ValueError("path is empty: give the header file to write")
     text = c_header_text(rotor_map, path, dtype=dtype, name=name, vehicle=vehicle)
+    source = rotor_map.dataset.encoding.get("source")  # (the file the map was opened from, if any)
+    if source:  # (the header replaced the map it was made from, through a link too: an export audit)
+        for own in (Path(source), sidecar_path(source)):
+            if os.path.realpath(path) == os.path.realpath(own):
+                raise ValueError(f"path: {as_path(path).name} is the map's own file {own.name}: it would be "
+                                 "overwritten; name the header otherwise (e.g. *.h)")
     with atomic_write(path) as fh:
         fh.write(text)
     return as_path(path)
@@ -296,7 +320,8 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         own for a map that does not record its set), as :class:`propmap.VehicleMap`.
     TypeError
         ``rotor_map`` not a :class:`propmap.RotorMap` (a map Dataset: wrap it,
-        ``RotorMap(ds)``); ``path`` not a str or os.PathLike.
+        ``RotorMap(ds)``); ``path`` not a str or os.PathLike; ``vehicle`` not a
+        :class:`propmap.Vehicle`.
 
     Warns
     -----
@@ -321,6 +346,10 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         raise ValueError(f"dtype must be 'float' or 'double', got {dtype!r}")
     path = as_path(path)
     prefix = c_prefix(path, name)
+    if vehicle is not None:
+        from .vehicle.layout import check_vehicle
+
+        check_vehicle(vehicle)
     rm = rotor_map
     a = rm.attrs
     fmt_axis = ".17g"
@@ -342,7 +371,8 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         source=_comment(a.get("propmap_source_sha256", "") or "not recorded"), model=_comment(a.get("model", "")),
         uncertainty=unc,
         params_label=_comment((a.get("params_label", "") or a.get("section_model", "")) + _air_words(a)),
-        citation=_comment(a.get("citation", "") or "-"), n0=n0, n1=n1, n2=n2, rpm0=rm.omega[0] / RPM,
+        citation=_comment(a.get("citation", "") or a.get("propeller_source", "") or "-"), n0=n0, n1=n1, n2=n2,
+        rpm0=rm.omega[0] / RPM,
         rpm1=rm.omega[-1] / RPM, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),
         b1=np.degrees(rm.incidence[-1]), ctype=dtype, eT=_pct(a.get(check + "thrust_max")),
         eQ=_pct(a.get(check + "torque_max")), eD=_pct(a.get(check + "drag_max")),
