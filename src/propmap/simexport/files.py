@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import re
 from pathlib import Path
 
@@ -309,15 +310,20 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     Raises
     ------
     ValueError
-        ``vehicle`` with another target, or one RotorPy cannot represent; a ``path`` named
-        ``*.report.json`` (an export's report: it would replace another export's).
+        ``vehicle`` with another target, or one RotorPy cannot represent; an empty ``path``, or
+        one named ``*.report.json`` (an export's report: it would replace another export's).
     TypeError
-        ``vehicle`` given and not a :class:`propmap.Vehicle`; ``path`` not a str or os.PathLike.
+        ``res`` not a :class:`SimExport`; ``vehicle`` given and not a :class:`propmap.Vehicle`;
+        ``path`` not a str or os.PathLike.
     OSError
         The files cannot be written.
     """
+    if not isinstance(res, SimExport):
+        raise TypeError(f"res must be a SimExport (propmap.export_sim), got {type(res).__name__}")
     if vehicle is not None:
         check_vehicle(vehicle)
+    if isinstance(path, (str, os.PathLike)) and not os.fspath(path):
+        raise ValueError("path is empty: give the coefficient file to write")
     path = as_path(path)
     if path.name.lower().endswith(".report.json"):
         raise ValueError(f"path: {path.name}: a name ending in .report.json is an export's report (written beside its "

@@ -164,8 +164,18 @@ def default_envelope(propeller) -> Envelope:
     Returns
     -------
     Envelope
+
+    Raises
+    ------
+    TypeError
+        ``propeller`` not a :class:`propmap.Propeller`.
     """
+    from ..core.geometry import Propeller
     from ..maps import default_axes
+
+    if not isinstance(propeller, Propeller):
+        raise TypeError(f"propeller must be a Propeller (propmap.load_propeller, read_geometry), "
+                        f"got {type(propeller).__name__}")
 
     rpm, _, _ = default_axes(propeller)
     return Envelope(rpm=(float(rpm[-1]) / 3, float(rpm[-1])), airspeed=(0.0, 15.0))
@@ -416,7 +426,8 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         The fitted points' seed, in [0, 2**63 - 2]; the check points' is :func:`check_seed`
         (``seed`` + 1).
     params_label : str
-        Recorded in the result.
+        Recorded in the result (``meta["params"]``); default the set's own ``label``, else its
+        section model. ``meta["citation"]`` is the propeller's ``source`` where it has one.
 
     Returns
     -------
@@ -431,7 +442,7 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         or terms it cannot separate (:data:`MAX_CONDITION`).
     TypeError
         A propeller, parameter set or air of the wrong type
-        (:func:`propmap.core.solver.check_model_args`).
+        (:func:`propmap.core.solver.check_model_args`); ``params_label`` not a str.
 
     Warns
     -----
@@ -449,6 +460,8 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         warnings.warn(f"this parameter set gives a side force and a pitching moment ({side}); the "
                       f"{target} model has no term fitted to them (RotorPy's k_flap is written 0), so they are left "
                       "out and their error is not reported", UserWarning, stacklevel=2)
+    if not isinstance(params_label, str):
+        raise TypeError(f"params_label must be a str, got {type(params_label).__name__}")
     n_points = integer("n_points", n_points, 20, 1_000_000)
     seed = integer("seed", seed, 0, SEED_MAX - 1)
     if envelope is None:
@@ -472,7 +485,10 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
     if errors["points_flagged"] == check["omega"].size:
         warnings.warn(f"every one of the {check['omega'].size} check points of the envelope is flagged (vortex ring or "
                       "multiple roots): no error outside flagged regions to report (n/a)", UserWarning, stacklevel=2)
-    meta = {"propeller": propeller.name, "params": params_label or params.section_model,
+    label = params_label or params.label or params.section_model  # (the set's own label: the file's head said
+    # "(cambered)" of calibrated:apce_8x6 where the API was given no params_label, an export audit)
+    meta = {"propeller": propeller.name, "params": label,
+            **({"citation": propeller.source} if propeller.source else {}),
             "model_uncertainty": {**model_uncertainty(params_label or getattr(params, "label", "")),
                                   "edgewise_trend": _edgewise_trend(propeller, params, air, envelope)},
             "section_model": params.section_model, "propmap_version": __version__,

@@ -51,6 +51,8 @@ import warnings
 
 import numpy as np
 
+from ..core._inputs import _as_array
+
 __all__ = ["ALIASES", "EVEN_TERMS", "GAZEBO_AXIAL_SPEED", "ODD_TERMS", "TARGETS", "canonical_target", "predict"]
 
 TARGETS = ("rotorpy", "gazebo-classic", "gz-sim", "multinomial")
@@ -122,16 +124,21 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
     Raises
     ------
     ValueError
-        Unknown target; an Omega below 0 or NaN (a magnitude), or of 0 for the multinomial,
-        whose terms divide by Omega R (NaN loads and, below 0, loads of the wrong sign before);
-        inputs whose shapes do not broadcast.
+        Unknown target; an input outside the range :func:`propmap.rotor_loads` takes, NaN, text or
+        a bool (Omega in [0, OMEGA_MAX] rad/s, a magnitude; V in [0, AIRSPEED_MAX] m/s, a
+        magnitude; beta in [0, pi] rad), or an Omega of 0 for the multinomial, whose terms divide
+        by Omega R (NaN loads and, below 0, loads of the wrong sign before); inputs whose shapes
+        do not broadcast.
     KeyError
         ``coefficients`` without a term of the target's model.
     """
     target = canonical_target(target)
     # (broadcast first: Q and M_R of rotorpy, T and Q of the Gazebo forms took omega's shape alone)
-    om, V, b = np.broadcast_arrays(*(np.asarray(x, float) for x in (omega, airspeed, incidence)))
-    bad = ~(om > 0) if target == "multinomial" else ~(om >= 0)  # (NaN too; the multinomial is singular at 0)
+    # (each checked as rotor_loads checks it: a negative airspeed gave a negative drag, NaN NaN loads and "800" was
+    # read as 800, an export audit)
+    om, V, b = np.broadcast_arrays(*(_as_array(k, x) for k, x in (("omega", omega), ("airspeed", airspeed),
+                                                                   ("incidence", incidence))))
+    bad = ~(om > 0) if target == "multinomial" else ~(om >= 0)  # (the multinomial is singular at 0)
     if bad.any():
         raise ValueError(f"omega must be {'>' if target == 'multinomial' else '>='} 0 rad/s for the {target} model "
                          f"(the rotation rate's magnitude), got {float(om[bad].reshape(-1)[0])!r}")
