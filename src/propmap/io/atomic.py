@@ -169,6 +169,8 @@ def atomic_write(path, mode: str = "w", **kwargs):
     ------
     OSError
         The folder cannot be created or written, or the rename fails.
+    ValueError
+        An empty ``path``.
     """
     if "b" not in mode:
         kwargs.setdefault("encoding", "utf-8")
@@ -228,8 +230,12 @@ def atomic_paths(paths):
     Raises
     ------
     OSError
-        As :func:`atomic_write`.
+        As :func:`atomic_write`, naming the target (not its temporary file).
+    ValueError
+        An empty path.
     """
+    if any(isinstance(p, (str, os.PathLike)) and not os.fspath(p) for p in paths):
+        raise ValueError("path is empty: give the file to write")  # (renamed onto ".": "Device or resource busy")
     # a symbolic link to a file is written through: its target replaced, the link kept (the rename replaced the
     # link itself with a regular file and left the target as it was; /dev/stdout too, run as root: an audit)
     paths = [Path(os.path.realpath(p)) if os.path.islink(p) and os.path.exists(p) else Path(p) for p in paths]
@@ -239,7 +245,10 @@ def atomic_paths(paths):
             path.parent.mkdir(parents=True, exist_ok=True)
             prefix, suffix = temp_affixes(path.name)
             with signals_held():  # (a SIGTERM between the file's creation and its listing here left it behind)
-                fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=path.parent)
+                try:
+                    fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=path.parent)
+                except OSError as exc:  # (said of the target, not of a hidden temporary name: an export audit)
+                    raise type(exc)(exc.errno, exc.strerror, str(path)) from None
                 tmps.append(Path(tmp))
                 os.close(fd)
         yield tuple(tmps)
