@@ -85,7 +85,7 @@ def test_the_hover_trim_of_dcq_searches_the_bounds_given(apc):
     """torque_change_at_constant_thrust's bounds are 'collectives searched for the hover trim': climbing at 5 m/s the
     APC makes less thrust than in hover at the same rate, so the hover collective is negative and bounds of 0 to 0.01
     rad hold none (TrimError), where the default -20 to +30 deg find it."""
-    from propmap.core.trim import torque_change_at_constant_thrust
+    from propmap.core.torque_change import torque_change_at_constant_thrust
 
     prop, p = apc
     _, _, hover = torque_change_at_constant_thrust(prop, p, 900.0, 5.0, 0.0)

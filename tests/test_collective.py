@@ -13,7 +13,8 @@ import pytest
 import propmap as pm
 from propmap.cli.main import main
 from propmap.core.geometry import rotor_like
-from propmap.core.trim import TrimError, torque_change_at_constant_thrust, trim_collective
+from propmap.core.torque_change import torque_change_at_constant_thrust
+from propmap.core.trim import TrimError, trim_collective
 from propmap.identify.data import read_loads
 from propmap.io.param_sets import resolve_params, section_preset
 from propmap.io.params_file import params_from_dict

@@ -31,7 +31,7 @@ _EXPORTS = {
     "read_vehicle_with_params": "vehicle", "resolve_vehicle": "vehicle", "ResolvedVehicle": "vehicle",
     "trim_collective": "core.trim", "TrimResult": "core.trim", "TrimError": "core.trim", "trim_omega": "core.trim",
     "OmegaTrimResult": "core.trim",
-    "torque_change_at_constant_thrust": "core.trim", "section_preset": "io.param_sets",
+    "torque_change_at_constant_thrust": "core.torque_change", "section_preset": "io.param_sets",
     "rotor_like": "core.geometry", "example_file": "io.catalogue", "example_files": "io.catalogue",
 }
 

@@ -115,7 +115,8 @@ def _trim(propeller, params, air, thrust, rpm, airspeed, beta, rpm_range, bounds
     --hover-reference the torque change at constant thrust. Returns (result, omega [rad/s],
     the collective added [deg], dCQ or None); an unreachable thrust is an InputError."""
     from ..core.solver import SolverError
-    from ..core.trim import TrimError, torque_change_at_constant_thrust, trim_collective, trim_omega
+    from ..core.torque_change import torque_change_at_constant_thrust
+    from ..core.trim import TrimError, trim_collective, trim_omega
 
     solve_rpm = rpm is None
     try:

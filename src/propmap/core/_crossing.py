@@ -54,7 +54,10 @@ def _checked_thrust(thrust, thrust_tol) -> tuple[np.ndarray, float | None]:
     tol = None if thrust_tol is None else real(thrust_tol)  # (True was a tolerance of 1 N)
     if thrust_tol is not None and (tol is None or not (tol > 0 and math.isfinite(tol))):
         raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
-    T_star = np.asarray(thrust)
+    try:
+        T_star = np.asarray(thrust)
+    except (ValueError, OverflowError) as exc:  # (ragged nesting: NumPy's words alone did not name the thrust)
+        raise ValueError(f"thrust must be a number or a rectangular array of numbers [N] ({exc})") from None
     if T_star.dtype.kind not in "iuf":  # (a string '4' read as 4 N, True as 1 N)
         raise ValueError(f"thrust must be a number or an array of numbers [N], got {thrust!r:.60}")
     T_star = T_star.astype(float)

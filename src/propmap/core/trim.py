@@ -1,5 +1,4 @@
-"""Trim: the collective (or the rotation rate) that makes a given thrust, and the torque change
-at constant thrust.
+"""Trim: the collective (or the rotation rate) that makes a given thrust.
 
 A variable-pitch rotor is flown by its collective: at a given rotation rate and velocity the
 blade-angle offset is set so that the rotor makes the thrust wanted. :func:`trim_collective`
@@ -23,10 +22,8 @@ the collective rises), the first downward crossing is the lowest collective that
 it is returned, marked in ``TrimResult.falling`` (until 2026-12-01 such a thrust was refused as
 one no collective makes: a user-level audit). :func:`trim_omega` keeps the rising branch only.
 
-:func:`torque_change_at_constant_thrust` gives the descent literature's dCQ: the torque
-coefficient at an operating point minus the one in hover at the same thrust and rotation
-rate (both trimmed with the collective), the quantity the measured descent data tabulate
-(e.g. Castles & Gray, NACA TN 2474, 1951, who derive the induced velocity from it).
+The torque change at constant thrust, which trims its hover reference with the collective, is
+core/torque_change.py's.
 """
 
 from __future__ import annotations
@@ -48,8 +45,7 @@ from .geometry import Propeller, broadcast_readonly
 from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads, model_air,
                      rotor_loads, supersonic_tips_allowed)
 
-__all__ = ["TrimError", "TrimResult", "OmegaTrimResult", "trim_collective", "trim_omega", "default_omega_bounds",
-           "torque_change_at_constant_thrust"]
+__all__ = ["TrimError", "TrimResult", "OmegaTrimResult", "trim_collective", "trim_omega", "default_omega_bounds"]
 
 #: the bracketing grid's default spacing [rad] (narrowed to the bounds' width where they are narrower)
 GRID_STEP = math.radians(2.5)
@@ -60,6 +56,9 @@ BRANCH = "lowest collective that makes the thrust (the first upward crossing on 
 #: the branch :func:`trim_collective` returns where the bounds hold no upward crossing, in words
 FALLING_BRANCH = ("lowest collective that makes the thrust, where it falls as the collective rises (no rising "
                   "crossing in the range: the set stalled there)")
+#: the branch :func:`trim_collective` returns where some points' solutions are on the rising branch and others, with no
+#: rising crossing in the range, on the falling one
+MIXED_BRANCH = f"{BRANCH}; where `falling` is True: the {FALLING_BRANCH}"
 #: the branch :func:`trim_omega` returns, in words
 OMEGA_BRANCH = "lowest rotation rate that makes the thrust (the first upward crossing on the grid)"
 #: nodes of trim_omega's bracketing grid, spaced geometrically across its bounds
@@ -89,7 +88,8 @@ class TrimResult:
         Crossings of the thrust asked for that the collective grid saw (1: a unique
         solution in the bounds; more: a stalled branch as well, not the one returned).
     branch : str
-        Which solution is returned, in words (:data:`BRANCH`).
+        Which solution is returned, in words: :data:`BRANCH`, :data:`FALLING_BRANCH` where
+        every point's solution is on the falling branch, :data:`MIXED_BRANCH` where some are.
     falling : ndarray of bool, optional
         True where the bounds hold no upward crossing and the solution returned is the first
         downward one: the thrust falls as the collective rises there (a stalled branch;
@@ -247,7 +247,7 @@ def trim_collective(
         peak_at = (f", highest near a collective of {round(math.degrees(at_top), 4) + 0.0:.4g} deg, where the set "
                    "stalls (docs/models.md, Collective pitch as an input, and trim)") if stalls else ""
         if top > 0 and T1[i] > 10 * top:  # (a thrust in gf: 300 for 2.9 N got the stall's diagnosis)
-            peak_at = f": {T1[i] / top:.3g} times the most it reaches; is the thrust in grams? It is in N"
+            peak_at = f": {T1[i] / top:.3g} times the most it reaches; {_too_much(air)}"
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
             f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s = {om1[i] / RPM:.6g} rpm, "
@@ -257,8 +257,25 @@ def trim_collective(
     loads = rotor_loads(propeller, params, om1.reshape(shape), V1.reshape(shape), b1.reshape(shape),
                         collective=np.where(ok, x, 0.0).reshape(shape), **kw)
     _nan_where_missing(loads, ok, shape)  # NaN loads where no collective makes the thrust
+    # (the words of the branch returned: BRANCH's "upward crossing" was said of a falling-branch solution, a review)
+    fell_ok = fell[ok]
+    branch = BRANCH if not fell_ok.any() else FALLING_BRANCH if fell_ok.all() else MIXED_BRANCH
     return TrimResult(collective=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape),
-                      falling=fell.reshape(shape))
+                      branch=branch, falling=fell.reshape(shape))
+
+
+#: the air's density below which a thrust beyond 10 times the most a rotor makes is put down to the thin air rather than
+#: to a thrust given in grams [kg/m^3] (a tenth of the sea level's)
+THIN_AIR_RHO = 0.1225
+
+
+def _too_much(air: Air) -> str:
+    """The likely cause of a thrust beyond 10 times the most the rotor makes: grams for newtons, or,
+    in air thinner than THIN_AIR_RHO, the air (in air of 1e-6 kg/m^3 the grams were suspected)."""
+    if air.rho < THIN_AIR_RHO:
+        return (f"the air's density is {air.rho:.3g} kg/m^3 (1.225 at sea level), and the thrust is in proportion to "
+                "it: is the density meant?")
+    return "is the thrust in grams? It is in N"
 
 
 def default_omega_bounds(propeller: Propeller, air: Air) -> tuple[float, float]:
@@ -394,7 +411,7 @@ def trim_omega(
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
         raise _no_rate(i, shape, (lo, hi), (T1[i], V1[i], b1[i], c1[i]), (reach[0][i], reach[1][i]),
-                       hi * propeller.radius / air.speed_of_sound)
+                       hi * propeller.radius / air.speed_of_sound, air)
     ok = ~missing
     loads = rotor_loads(propeller, params, np.where(ok, x, lo).reshape(shape), V1.reshape(shape), b1.reshape(shape),
                         collective=None if collective is None else c1.reshape(shape), **kw)
@@ -413,15 +430,16 @@ def _omega_bounds(bounds, propeller: Propeller, air: Air) -> tuple[float, float]
     return lo, hi
 
 
-def _no_rate(i: int, shape, bounds, point, reach, top_mach: float) -> TrimError:
+def _no_rate(i: int, shape, bounds, point, reach, top_mach: float, air: Air) -> TrimError:
     """The error of :func:`trim_omega` where no rate in ``bounds`` makes the thrust at point ``i``
     (``point``: its thrust, airspeed, incidence and collective; ``reach``: the thrust the bounds
-    reach there; ``top_mach``: the upper bound's tip Mach number), with the likely cause."""
+    reach there; ``top_mach``: the upper bound's tip Mach number; ``air`` the air solved in), with the
+    likely cause."""
     lo, hi = bounds
     T, V, b, c = point
     low, top = reach
     if T > top:
-        why = f" (the rotor makes T <= {top:.6g} N up to tip Mach {top_mach:.2g}: is the thrust in grams? It is in N)"
+        why = f" (the rotor makes T <= {top:.6g} N up to tip Mach {top_mach:.2g}: {_too_much(air)})"
     elif T >= low:
         why = ""
     elif V > 0 and math.cos(b) < 0:
@@ -436,130 +454,3 @@ def _no_rate(i: int, shape, bounds, point, reach, top_mach: float) -> TrimError:
         f"thrust={T:.6g} N at operating point {_where(i, shape)}(airspeed={V:.6g} m/s, "
         f"incidence={math.degrees(b):.6g} deg, collective={math.degrees(c):.6g} deg): the thrust there "
         f"spans [{low:.6g}, {top:.6g}] N{why}")
-
-
-def torque_change_at_constant_thrust(
-    propeller: Propeller,
-    params: SectionParams,
-    omega,
-    airspeed,
-    incidence,
-    *,
-    collective=None,
-    air: Air | None = None,
-    discretization: Discretization = DEFAULT_DISCRETIZATION,
-    bounds=(-math.radians(20.0), math.radians(30.0)),
-):
-    """dCQ: CQ at an operating point minus CQ in hover at the same thrust and Omega.
-
-    The hover point is trimmed with the collective (:func:`trim_collective`) to the thrust
-    the rotor makes at the operating point; CQ = Q / (rho n^2 D^5) in the propeller
-    convention. Negative dCQ: the descent gives the rotor power (ideal autorotation where
-    CQ itself reaches 0).
-
-    Parameters
-    ----------
-    propeller, params, omega, airspeed, incidence, air, discretization
-        As in :func:`propmap.rotor_loads`.
-    collective : float or array_like, optional
-        The operating point's blade-angle offset [rad].
-    bounds : (float, float)
-        Collectives searched for the hover trim [rad].
-
-    Returns
-    -------
-    (dCQ, loads, hover) : (ndarray, RotorLoads, TrimResult)
-        dCQ of the broadcast shape, the loads at the operating point and the hover trim (its
-        ``falling`` set where hover makes the thrust only where it falls as the collective
-        rises, the stalled branch: :func:`trim_collective`'s rule). Where hover makes the
-        thrust at more than one collective in ``bounds`` (a set that stalls: the thrust peaks
-        and falls with the collective), the hover reference is the one nearest the operating
-        point's ``collective`` (:data:`NEAREST_BRANCH`, ``hover.branch``): continuous with
-        the operating point from hover, where dCQ = 0 (until 2026-12-01 the lowest, on
-        another branch: dCQ 10% of CQ in hover); its ``falling`` then says where the hover
-        thrust falls as the collective rises at that collective (the stalled side), whether
-        or not a rising crossing exists too.
-
-    Raises
-    ------
-    ValueError, TrimError, propmap.SolverError
-        As :func:`trim_collective` (a thrust that no hover collective in ``bounds`` makes,
-        e.g. a negative thrust in the windmill brake, raises TrimError); ValueError also for
-        an ``omega`` of 0 (CQ undefined).
-    """
-    air = model_air(params, air)
-    loads = rotor_loads(propeller, params, omega, airspeed, incidence, collective=collective, air=air,
-                        discretization=discretization)
-    if np.any(loads.omega <= 0):  # (CQ = Q / (rho n^2 D^5) has no value at rest: a silent NaN once)
-        raise ValueError("omega must be > 0 rad/s: the torque coefficient of a stopped rotor is undefined")
-    hover = trim_collective(propeller, params, loads.thrust, loads.omega, 0.0, 0.0, air=air,
-                            discretization=discretization, bounds=bounds)
-    hover = _hover_nearest(propeller, params, loads, 0.0 if collective is None else collective, hover, air,
-                           discretization, bounds)
-    return loads.CQ - hover.loads.CQ, loads, hover
-
-
-#: the hover reference of :func:`torque_change_at_constant_thrust` where hover makes the thrust at more than one
-#: collective
-NEAREST_BRANCH = ("the collective nearest the operating point's that makes the thrust in hover (continuous with the "
-                  "operating point from hover; the lowest where the search out from it finds none)")
-#: the first step out from the operating collective in search of the nearest hover crossing [rad], doubled
-#: NEAREST_LEVELS times at most (0.25 deg to 64 deg: beyond any bounds)
-NEAREST_STEP = math.radians(0.25)
-NEAREST_LEVELS = 9
-
-
-def _hover_nearest(propeller, params, loads, collective, hover: TrimResult, air, discretization, bounds) -> TrimResult:
-    """The hover trim nearest the operating point's ``collective``: the crossing of the hover
-    thrust with the operating thrust found by steps out from it (NEAREST_STEP, doubling, within
-    ``bounds``) on either side and refined; ``hover`` (the lowest crossing) where none is found.
-    At 1338.58 rad/s apce_8x6's calibrated set peaks near -1.1 deg in hover, so from its 0 deg
-    (the falling branch) the lowest crossing, -2.17 deg, made dCQ 1.2e-3 (10% of CQ) in hover
-    itself, where it is 0, and at 1e-3 m/s of descent (a physics audit, stop 100)."""
-    from scipy.optimize import elementwise
-
-    shape = np.shape(hover.collective)
-    lo, hi = _check_bounds(bounds)
-    T, om = np.asarray(loads.thrust, float).reshape(-1), np.asarray(loads.omega, float).reshape(-1)
-    c0 = np.clip(np.broadcast_to(np.asarray(collective, float), shape).reshape(-1), lo, hi)
-    tol = _tolerances(T, None)
-
-    def f(c, om_, T_, tol_):  # the hover thrust's excess over the operating point's, in units of its tolerance
-        return (rotor_loads(propeller, params, om_, 0.0, 0.0, collective=c, air=air,
-                            discretization=discretization).thrust - T_) / tol_
-
-    n = T.size
-    x = np.array(hover.collective, float).reshape(-1)
-    with flapping_warning_held():
-        f0 = f(c0, om, T, tol)
-        # each side's nearest bracket [inner, outer] of a sign change, found by steps doubling out from c0
-        brackets = []
-        for sgn in (-1.0, 1.0):
-            a, b, found, inner = np.empty(n), np.empty(n), f0 == 0, c0
-            for k in range(NEAREST_LEVELS):
-                outer = np.clip(c0 + sgn * NEAREST_STEP * 2.0**k, lo, hi)
-                new = ~found & (np.sign(f(outer, om, T, tol)) != np.sign(f0))
-                a[new], b[new], found = inner[new], outer[new], found | new
-                inner = outer
-                if found.all():
-                    break
-            brackets.append((np.minimum(a, b), np.maximum(a, b), found & (f0 != 0)))
-        best = np.where(f0 == 0, 0.0, np.inf)
-        x[f0 == 0] = c0[f0 == 0]
-        for left, right, ok in brackets:
-            if not ok.any():
-                continue
-            res = elementwise.find_root(f, (left[ok], right[ok]), args=(om[ok], T[ok], tol[ok]),
-                                        tolerances=dict(xatol=1e-10, xrtol=0.0, fatol=1.0, frtol=0.0))
-            idx = np.flatnonzero(ok)[res.success]
-            root = res.x[res.success]
-            nearer = np.abs(root - c0[idx]) < best[idx]
-            idx, root = idx[nearer], root[nearer]
-            x[idx], best[idx] = root, np.abs(root - c0[idx])
-        # the side of the hover curve each reference lies on, from its slope there (the operating collective's own
-        # crossing, f0 = 0, kept the lowest crossing's flag: a review, stop 100)
-        fell = f(np.minimum(x + 1e-4, hi), om, T, tol) < f(np.maximum(x - 1e-4, lo), om, T, tol)
-    hover_loads = rotor_loads(propeller, params, om.reshape(shape), 0.0, 0.0, collective=x.reshape(shape), air=air,
-                              discretization=discretization)
-    return TrimResult(collective=x.reshape(shape), loads=hover_loads, n_solutions=hover.n_solutions,
-                      branch=NEAREST_BRANCH, falling=fell.reshape(shape))
