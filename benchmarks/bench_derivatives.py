@@ -30,6 +30,7 @@ inputs), the residual evaluations per annulus of the solve, and the CPU.
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import sys
@@ -153,4 +154,5 @@ def vehicle_linearisation(n: int = 200) -> dict:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     print(json.dumps(main(), indent=2))

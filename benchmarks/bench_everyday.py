@@ -31,6 +31,7 @@ Writes benchmarks/results/everyday.json atomically and prints it.
 
 from __future__ import annotations
 
+import argparse
 import json
 import math
 import os
@@ -207,8 +208,12 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--million", action="store_true")
+    parser.add_argument("--single-call", metavar="SET", help="one process of the single-call loop (internal)")
+    args = parser.parse_args()  # (main reads --million from sys.argv)
     sys.path.insert(0, str(Path(__file__).parent))
-    if "--single-call" in sys.argv:  # one process of single_call_processes
-        print(json.dumps(single_call(_single_params(sys.argv[sys.argv.index("--single-call") + 1]))))
+    if args.single_call:  # one process of single_call_processes
+        print(json.dumps(single_call(_single_params(args.single_call))))
     else:
         main()

@@ -27,6 +27,7 @@ benchmarks/results/fit.json atomically.
 
 from __future__ import annotations
 
+import argparse
 import json
 import math
 import sys
@@ -146,4 +147,8 @@ def flight_with_flapping() -> dict:
 
 
 if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--flight", action="store_true")
+    parser.add_argument("--swirl", action="store_true")
+    parser.parse_args()  # (main reads its flags from sys.argv)
     main()

@@ -22,6 +22,7 @@ et al., RSS 2021). Writes benchmarks/results/flight.json atomically and prints i
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import sys
@@ -112,4 +113,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--fit", action="store_true")
+    parser.add_argument("--cg", action="store_true")
+    parser.parse_args()  # (main reads its flags from sys.argv)
     main()

@@ -25,6 +25,7 @@ benchmarks/results/solver.json atomically.
 
 from __future__ import annotations
 
+import argparse
 import json
 import math
 import re
@@ -211,4 +212,7 @@ def cpu_name() -> str:
 
 
 if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--quick", action="store_true")
+    parser.parse_args()  # (main reads its flags from sys.argv)
     main()

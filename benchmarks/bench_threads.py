@@ -15,6 +15,7 @@ benchmarks/results/threads.json atomically and prints it.
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import sys
@@ -73,4 +74,7 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--quick", action="store_true")
+    parser.parse_args()  # (main reads its flags from sys.argv)
     main()

@@ -12,6 +12,7 @@ benchmarks/results/validation/timing.json.
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import time
@@ -34,4 +35,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

@@ -25,6 +25,7 @@ Findings (2026-11-28): docs/validation.md, "A vendor's prediction as a baseline"
 
 from __future__ import annotations
 
+import argparse
 import re
 import sys
 import warnings
@@ -159,4 +160,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

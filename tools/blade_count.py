@@ -20,6 +20,7 @@ count", and docs/models.md, "Swirl".
 
 from __future__ import annotations
 
+import argparse
 import math
 import warnings
 
@@ -93,4 +94,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

@@ -22,9 +22,9 @@ trend with rpm inside each static run, paired propellers) and writes OUT_DIR/tab
 
 from __future__ import annotations
 
+import argparse
 import csv
 import math
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -121,11 +121,13 @@ def pct(x):
 
 
 def main():
-    if len(sys.argv) < 2 or sys.argv[1].startswith("-"):
-        raise SystemExit(__doc__)
-    out_dir = Path(sys.argv[1])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("out_dir", type=Path)
+    parser.add_argument("--recompute", action="store_true")
+    args = parser.parse_args()
+    out_dir = args.out_dir
     out_dir.mkdir(parents=True, exist_ok=True)
-    if "--recompute" in sys.argv or not (out_dir / "props.csv").exists():
+    if args.recompute or not (out_dir / "props.csv").exists():
         compute(out_dir)
     c = load(out_dir)
     pts = np.load(out_dir / "points.npz")

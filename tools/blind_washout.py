@@ -18,6 +18,7 @@ Findings (2026-11-25): docs/validation.md, "What the blind error follows".
 
 from __future__ import annotations
 
+import argparse
 import math
 
 import numpy as np
@@ -75,4 +76,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

@@ -15,15 +15,16 @@ Writes catalogue.json. Sources and citations: src/propmap/data/CITATION.md.
     .venv/bin/python tools/build_catalogue.py [../shared/data]
 """
 
+import argparse
 import csv
 import json
 import math
 import re
 import shutil
-import sys
 from pathlib import Path
 
-SHARED = Path(sys.argv[1] if len(sys.argv) > 1 else "../shared/data")
+#: the shared data folder (the command line's DATA)
+SHARED = Path("../shared/data")
 OUT = Path("src/propmap/data")
 APC_SUFFIX = {"apce": "E", "apcsf": "SF", "apcsp": ""}
 INCH_MM = 25.4
@@ -198,4 +199,7 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("data", nargs="?", type=Path, default=SHARED, help="the shared data (default ../shared/data)")
+    SHARED = parser.parse_args().data
     main()

@@ -15,6 +15,7 @@ pitch (and of the generic set without the family on the same propellers), and th
 oblique-flow case's ratios (docs/validation.md).
 """
 
+import argparse
 import math
 import re
 import warnings
@@ -86,4 +87,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

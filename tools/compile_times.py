@@ -17,6 +17,7 @@ each step takes a second or less.
 
 from __future__ import annotations
 
+import argparse
 import os
 import sys
 import time
@@ -57,4 +58,5 @@ def main() -> int:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     sys.exit(main())

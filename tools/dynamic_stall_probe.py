@@ -36,8 +36,8 @@ Measured 2026-11-26 (docs/validation.md, the gill2019 case's bullets); propmap's
 
 from __future__ import annotations
 
+import argparse
 import math
-import sys
 
 import numpy as np
 
@@ -138,4 +138,6 @@ def main(gamma: float) -> None:
 
 
 if __name__ == "__main__":
-    main(float(sys.argv[1]) if len(sys.argv) > 1 else 1.5)
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("gamma", nargs="?", type=float, default=1.5, help="Gormont's gamma (0: the static polar)")
+    main(parser.parse_args().gamma)

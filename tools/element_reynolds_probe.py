@@ -27,6 +27,7 @@ blade, generic set) edgewise at 1500 rad/s; then one axial point of each, which 
 
 from __future__ import annotations
 
+import argparse
 import math
 
 import numpy as np
@@ -114,4 +115,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

@@ -35,6 +35,8 @@ scheme 2 brackets 71.8% of the roots, 6.17 there, 7.80 overall; scheme 3 5.21 (e
 within 4.9e-8 v_m of the rule's), 6.21 with the scan. (2026-11-24, with the calibrated set of
 the stall blend M = 20 and no induction: 7.88, 97.7%, 6.65, 7.66, 72.0%, 6.18, 7.85.)
 """
+import argparse
+
 import numpy as np
 from scipy.optimize.elementwise import find_root
 
@@ -45,6 +47,9 @@ from propmap.core._physics import PK_INPLANE, cambered_annulus, element, loss_fa
 from propmap.core._momentum import inplane_induction_numpy, momentum_scale, momentum_thrust
 from propmap.core.polar import _model_constants
 from propmap.core._reference import solve_reference
+
+# (a script: --help, and nothing else, before the measurement)
+argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
 
 prop = pm.load_propeller("apce_8x6")
 p = pm.default_params("apce_8x6")

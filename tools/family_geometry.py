@@ -10,8 +10,8 @@ Data: UIUC Propeller Data Site vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), 
 from ../shared/data/uiuc_propdb/v2 (the package does not ship it).
 """
 
+import argparse
 import math
-import sys
 from dataclasses import replace
 from importlib import resources
 from pathlib import Path
@@ -50,4 +50,6 @@ def main(family: str) -> None:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("family", choices=("da4002", "da4052"))
+    main(parser.parse_args().family)

@@ -9,6 +9,8 @@ to monomial form for Horner evaluation:
 Run:  .venv/bin/python tools/fastmath_coefficients.py
 """
 
+import argparse
+
 import numpy as np
 from numpy.polynomial import chebyshev, polynomial
 
@@ -43,6 +45,7 @@ def coefficients():
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     atan, exp = coefficients()
     print("ATAN = (" + ", ".join(repr(float(c)) for c in atan) + ")")
     print("EXP = (" + ", ".join(repr(float(c)) for c in exp) + ")")

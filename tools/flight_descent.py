@@ -24,7 +24,7 @@ Prints the numbers of docs/flight.md, "The vertical force in hard manoeuvres":
 
 from __future__ import annotations
 
-import sys
+import argparse
 from dataclasses import replace
 from pathlib import Path
 
@@ -98,4 +98,6 @@ def main(cv: bool) -> None:
 
 
 if __name__ == "__main__":
-    main("--cv" in sys.argv[1:])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--cv", action="store_true", help="and the leave-one-log-out fits (about 6 min)")
+    main(parser.parse_args().cv)

@@ -22,7 +22,7 @@ long as W).
 implicit derivatives (an A/B of the two; the same optimum).
 """
 
-import sys
+import argparse
 import time
 import warnings
 from pathlib import Path
@@ -61,15 +61,17 @@ def rows(g) -> dict:
     }
 
 
-def main() -> None:
+def main(keys, differences: bool) -> None:
     warnings.simplefilter("ignore")  # the catalogue's coverage notes
     vehicle = read_vehicle(VEHICLE)
     samples = flight_samples([read_flight_log(p) for p in log_paths()], vehicle)
     air = Air(rho=1.204)
     table = rows(pm.generic_params().replace(air=air))
-    args = [a for a in sys.argv[1:] if a != "--differences"]
-    jacobian = "differences" if "--differences" in sys.argv[1:] else "implicit"
-    for key in args or [k for k in table if k not in ("C", "WP", "WN", "WD")]:
+    if any(k not in table for k in keys):
+        raise SystemExit(f"flight_design_table.py: unknown row(s) {[k for k in keys if k not in table]}; the rows: "
+                         f"{', '.join(table)}")
+    jacobian = "differences" if differences else "implicit"
+    for key in keys or [k for k in table if k not in ("C", "WP", "WN", "WD")]:
         names, base = table[key]
         t = time.perf_counter()
         cv = cross_validate_flight(samples, vehicle, base=base, air=air,
@@ -82,4 +84,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("rows", nargs="*", help="the table's rows to run (default: all but C, WP, WN, WD)")
+    parser.add_argument("--differences", action="store_true", help="the Jacobian by differences")
+    a = parser.parse_args()
+    main(a.rows, a.differences)

@@ -37,6 +37,7 @@ Prints the numbers of docs/flight.md, "Moments: what the errors are made of":
 
 from __future__ import annotations
 
+import argparse
 from dataclasses import replace
 from pathlib import Path
 
@@ -172,4 +173,5 @@ def rigid_body_constants(s, w) -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

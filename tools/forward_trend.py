@@ -17,6 +17,7 @@ Prints the numbers docs/simulators.md quotes ("Which trend is right").
 
 from __future__ import annotations
 
+import argparse
 import math
 from pathlib import Path
 
@@ -83,5 +84,6 @@ def catalogue() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     flight_logs()
     catalogue()

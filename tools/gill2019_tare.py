@@ -27,6 +27,7 @@ not in this repository, so the result bounds the explanation, it does not decide
 
 from __future__ import annotations
 
+import argparse
 import math
 
 import numpy as np
@@ -69,4 +70,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

@@ -1,4 +1,4 @@
-"""Count the hostile cases of issue 19 that propmap handles: the API cases and seeded
+"""Count the hostile cases that propmap handles (docs/cli.md): the API cases and seeded
 fuzzed netCDF maps (damaged bytes, hostile attribute values), each classified as handled or
 not. Run from the repository root against any source tree, e.g. an older one:
 

@@ -26,6 +26,7 @@ Selig, AIAA 2014-2151), as bundled. Results: docs/validation.md, Leave one maker
 
 from __future__ import annotations
 
+import argparse
 import json
 import sys
 import time
@@ -113,4 +114,6 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    control() if "--control" in sys.argv[1:] else main()
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--control", action="store_true", help="the size-matched control of APC's figure")
+    control() if parser.parse_args().control else main()

@@ -25,9 +25,9 @@ Findings (2026-11-28): docs/identification.md, "Intervals under the prior".
 
 from __future__ import annotations
 
+import argparse
 import math
 import os
-import sys
 import tempfile
 import warnings
 from concurrent.futures import ProcessPoolExecutor
@@ -100,8 +100,7 @@ def _wilson(k, n):
     return c - h, c + h
 
 
-def main(argv):
-    kind, level, n = argv[1], float(argv[2]), int(argv[3])
+def main(kind: str, level: float, n: int) -> None:
     os.environ.setdefault("NUMBA_CACHE_DIR", os.path.join(tempfile.gettempdir(), "propmap-numba"))
     with ProcessPoolExecutor(2) as ex:
         runs, along = zip(*ex.map(_one, [(kind, level, 1000 + s) for s in range(n)]))
@@ -121,4 +120,9 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv)
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("design", choices=("tunnel", "static"))
+    parser.add_argument("level", type=float, help="relative noise level, e.g. 0.003")
+    parser.add_argument("draws", type=int, help="propellers drawn from the prior")
+    a = parser.parse_args()
+    main(a.design, a.level, a.draws)

@@ -14,6 +14,7 @@ runs ahead of the measured one as the rpm rises (docs/validation.md, Where the m
 wrong).
 """
 
+import argparse
 import warnings
 from concurrent.futures import ProcessPoolExecutor
 
@@ -75,4 +76,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

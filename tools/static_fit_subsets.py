@@ -17,6 +17,7 @@ worker processes (spawned, re-importing it) use it too.
 
 from __future__ import annotations
 
+import argparse
 import os
 
 import propmap.identify.directions as D
@@ -52,6 +53,7 @@ def _row(rows) -> str:
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     from propmap.cli.validate_all import run_catalogue
 
     rows = run_catalogue(["static"], [], progress=False)["propellers"]

@@ -81,6 +81,7 @@ slope 1.34 / 1.17 / 1.27 / 1.77 -> 1.31 / 1.16 / 1.23 / 1.61; M_P slope 0 -> +0.
 
 from __future__ import annotations
 
+import argparse
 import math
 import time
 
@@ -248,4 +249,5 @@ def main():
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()

@@ -32,9 +32,9 @@ thin-section propellers".
 
 from __future__ import annotations
 
+import argparse
 import dataclasses
 import math
-import sys
 from concurrent.futures import ProcessPoolExecutor
 from functools import partial
 
@@ -105,10 +105,8 @@ def main(law: str, hold_reynolds: bool = False) -> None:
 
 
 if __name__ == "__main__":
-    args = sys.argv[1:]
-    hold = "--hold-reynolds" in args
-    args = [a for a in args if a != "--hold-reynolds"]
-    law = args[0] if args else "omega"
-    if law not in ("omega", "airspeed") or len(args) > 1:
-        sys.exit(f"washout_fit.py: usage: washout_fit.py [omega|airspeed] [--hold-reynolds], got {sys.argv[1:]}")
-    main(law, hold)
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("law", nargs="?", choices=("omega", "airspeed"), default="omega")
+    parser.add_argument("--hold-reynolds", action="store_true", help="the Reynolds terms held at the generic set's")
+    a = parser.parse_args()
+    main(a.law, a.hold_reynolds)

@@ -64,6 +64,7 @@ the same to 0.01). NeuroBEM rotor +0.06 / +0.22 / +0.48 / +0.83%; Beaver 1.021 /
 
 from __future__ import annotations
 
+import argparse
 import math
 import time
 
@@ -206,4 +207,5 @@ def main():
 
 
 if __name__ == "__main__":
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     main()
