@@ -318,10 +318,10 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     OSError
         The files cannot be written.
     """
-    if not isinstance(res, SimExport):
-        raise TypeError(f"res must be a SimExport (propmap.export_sim), got {type(res).__name__}")
     if vehicle is not None:
         check_vehicle(vehicle)
+    if not isinstance(res, SimExport):
+        raise TypeError(f"res must be a SimExport (propmap.export_sim), got {type(res).__name__}")
     if isinstance(path, (str, os.PathLike)) and not os.fspath(path):
         raise ValueError("path is empty: give the coefficient file to write")
     path = as_path(path)
