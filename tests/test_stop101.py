@@ -212,3 +212,154 @@ def test_scripts_answer_help_without_running(script, tmp_path):
                          cwd=tmp_path, timeout=120)
     assert res.returncode == 0 and res.stdout.startswith("usage: "), res.stderr[-500:]
     assert os.stat(example).st_mtime_ns == stamp and not any(tmp_path.iterdir())
+
+
+# ---- flight logs and vehicles (a second audit's: the flight-log pipeline) ------------------------------------------
+@pytest.fixture(scope="module")
+def segment(shared_data):
+    """The slowest shared NeuroBEM segment (Bauersfeld et al., RSS 2021), as read."""
+    from propmap.io.flightlog import read_flight_log
+
+    return read_flight_log(shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat")
+
+
+def test_logged_motor_accelerations_are_checked_against_the_motor_speeds(segment):
+    """NeuroBEM's dmot columns feed the spin-up moment where motor_time_constant is 0: in rpm/s (x9.55) or 1e6 times
+    too large they were read without a word (the yaw moment's error 6,430 N m); the shared segments' ratio is 0.99."""
+    import dataclasses
+
+    from propmap.io.flightlog_checks import FlightLogError, check_log
+
+    check_log(segment, "seg")  # (the log as measured passes)
+    for factor, match in ((30 / math.pi, r"motor acceleration is 9.4\d times .* in rpm/s"),
+                          (1e6, r"rotor_acceleration .* beyond \+-1e\+06 rad/s\^2"),
+                          (0.0, "zeros or another quantity"), (-1.0, "negated")):
+        with pytest.raises(FlightLogError, match=match):
+            check_log(dataclasses.replace(segment, rotor_acceleration=segment.rotor_acceleration * factor), "seg")
+    with pytest.raises(FlightLogError, match=r"\(4e\+05 Hz\), faster than the 10000 Hz .* is the time in seconds"):
+        check_log(dataclasses.replace(segment, t=segment.t / 1000.0), "seg")
+
+
+def test_vehicle_wrench_refuses_a_rotor_acceleration_beyond_its_range():
+    """rotor_acceleration = 1e30 rad/s^2 gave a yaw moment of 9.4e24 N m."""
+    veh = pm.read_vehicle("neurobem_quadrotor")
+    params = pm.default_params("apce_8x6")
+    om = np.full(4, 1000.0)
+    with pytest.raises(ValueError, match=r"rotor_acceleration must be within \+-1e\+06 rad/s\^2, got 1e\+30 for "
+                                         r"rotor 1 \(sample 1"):
+        pm.vehicle_wrench(veh, params, [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], om, rotor_acceleration=[1e30, 0, 0, 0])
+
+
+def _examples(tmp_path) -> str:
+    """The bundled example vehicles copied into ``tmp_path`` (a vehicle's parameter file beside it); the NeuroBEM
+    quadrotor's text."""
+    examples = Path(pm.__file__).parent / "data" / "examples"
+    for f in examples.iterdir():
+        (tmp_path / f.name).write_bytes(f.read_bytes())
+    return (examples / "neurobem_quadrotor.toml").read_text()
+
+
+def test_an_inertia_no_rigid_body_has_is_refused_in_python_and_in_files(tmp_path):
+    """The Python Vehicle took a zero inertia (measured moments silently 0), a negative one (their sign flipped) and
+    an unsymmetric one; the file reader took principal moments that break the triangle inequality."""
+    import dataclasses
+
+    from propmap.vehicle import VehicleFileError
+
+    veh = pm.read_vehicle("neurobem_quadrotor")  # (0.0025 + 0.0021 >= 0.0043: passes, as the example quadrotor)
+    pm.read_vehicle("quadrotor")
+    for inertia, match in (([0.0, 0.0, 0.0], "positive definite"), ([-0.0025, -0.0021, -0.0043], "positive definite"),
+                           ([[1.0, 2.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], "symmetric"),
+                           ([0.001, 0.001, 0.0043], "triangle inequality")):
+        with pytest.raises(ValueError, match=f"^Vehicle.inertia.*{match}"):
+            dataclasses.replace(veh, inertia=inertia)
+    text = _examples(tmp_path)
+    assert "inertia = [0.0025, 0.0021, 0.0043]" in text
+    (tmp_path / "v.toml").write_text(text.replace("inertia = [0.0025, 0.0021, 0.0043]",
+                                                  "inertia = [0.001, 0.001, 0.0043]"))
+    with pytest.raises(VehicleFileError, match="inertia: its principal moments 0.001, 0.001, 0.0043 kg m\\^2 break"):
+        pm.read_vehicle(tmp_path / "v.toml")
+
+
+def test_a_vehicle_whose_params_name_itself_is_refused_so(tmp_path):
+    """It was read as a parameter file and its missing keys named (cl1, cl2, cd, alpha0_deg)."""
+    from propmap.vehicle import VehicleFileError
+
+    (tmp_path / "self.toml").write_text('mass = 0.772\nparams = "self.toml"\n[[rotors]]\nposition = [0.1, 0, 0]\n'
+                                        'axis = [0, 0, 1]\nspin = "cw"\npropeller = "apce_8x6"\n')
+    with pytest.raises(VehicleFileError, match="params: 'self.toml' is this vehicle file itself"):
+        pm.read_vehicle(tmp_path / "self.toml")
+
+
+def test_read_flight_log_checks_motor_map_and_n_motors(shared_data, tmp_path):
+    """motor_map=(0, 0) made every motor speed 0 + 0 * output, "0,10" met a bare unpacking error, n_motors=2.5 a
+    TypeError and 0 "no outputs"; both were ignored on a NeuroBEM log."""
+    from .ulog_writer import hover_ulog
+
+    from propmap.io.flightlog import read_flight_log
+
+    mat = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"
+    with pytest.raises(ValueError, match="motor_map and n_motors apply to PX4 ULog files only"):
+        read_flight_log(mat, n_motors=4)
+    hover_ulog(tmp_path / "o.ulg", with_esc=False, n_outputs=8,
+               params={f"PWM_MAIN_FUNC{i}": 100 + i for i in range(1, 5)})
+    for kwargs, match in ((dict(motor_map=(0.0, 0.0)), "b not 0"), (dict(motor_map="0,10"), "must be two numbers"),
+                          (dict(motor_map="05"), "must be two numbers"), (dict(motor_map=(0.0, 10.0, 1.0)), "two"),
+                          (dict(motor_map=(0.0, 10.0), n_motors=2.5), r"n_motors must be an integer in \[1, 16\]"),
+                          (dict(motor_map=(0.0, 10.0), n_motors=0), r"n_motors must be an integer in \[1, 16\]")):
+        with pytest.raises(ValueError, match=match):
+            read_flight_log(tmp_path / "o.ulg", **kwargs)
+    assert read_flight_log(tmp_path / "o.ulg", motor_map=(0.0, 10.0), n_motors=4).rotor_omega.shape[1] == 4
+
+
+def test_motor_map_applies_to_the_ulogs_among_neurobem_logs(shared_data, tmp_path):
+    """--motor-map refused any LOG that was not a .ulg, so a NeuroBEM log and a ULog without esc_status could not be
+    fitted together; it applies to the .ulg logs now, and is refused only where no LOG is one."""
+    from .ulog_writer import hover_ulog
+
+    from propmap.cli._common import InputError
+    from propmap.cli.flight import _logs
+
+    mat = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"
+    hover_ulog(tmp_path / "o.ulg", with_esc=False, n_outputs=8,
+               params={f"PWM_MAIN_FUNC{i}": 100 + i for i in range(1, 5)})
+    logs = _logs([mat, tmp_path / "o.ulg"], (0.0, 10.0), 4)
+    assert [lg.format for lg in logs] == ["neurobem", "ulog"]
+    with pytest.raises(InputError, match="no LOG is one"):
+        _logs([mat], (0.0, 10.0), 4)
+
+
+def test_fit_flight_refuses_moments_without_inertia_before_reading_the_logs(tmp_path):
+    """The refusal came after every log was read and sampled (an empty log's error came first)."""
+    from click.testing import CliRunner
+
+    from propmap.cli.main import cli
+
+    text = _examples(tmp_path)
+    (tmp_path / "v.toml").write_text(text.replace("inertia = [0.0025, 0.0021, 0.0043]\n", ""))
+    for name in ("a.csv", "b.csv"):
+        (tmp_path / name).write_text("")
+    res = CliRunner().invoke(cli, ["fit", "flight", str(tmp_path / "a.csv"), str(tmp_path / "b.csv"), "--vehicle",
+                                   str(tmp_path / "v.toml"), "--moments", "--out", str(tmp_path / "o.toml")])
+    assert res.exit_code == 2 and "--moments: the vehicle file gives no inertia" in res.output, res.output
+
+
+def test_only_a_processes_descriptors_under_proc_are_streams():
+    """Any path under /proc was called 'a standard stream or an open file descriptor' (/proc/a.toml)."""
+    from propmap.cli._paths import _stream
+
+    assert not _stream(Path("/proc/a.toml")) and not _stream(Path("/proc/sys/x/a.toml"))
+    assert all(_stream(Path(p)) for p in ("/proc/self/fd/1", "/proc/123/fd/2", "/dev/stdout", "/dev/fd/1"))
+
+
+def test_a_motor_assigned_twice_is_named_where_another_is_missing(tmp_path):
+    """PWM_MAIN_FUNC1 = FUNC2 = 101 (Motor1 twice, Motor2 on no output): the error named the motors found only."""
+    from .ulog_writer import hover_ulog
+
+    from propmap.io.flightlog import FlightLogError, read_flight_log
+
+    params = {"PWM_MAIN_FUNC1": 101, "PWM_MAIN_FUNC2": 101, "PWM_MAIN_FUNC3": 103, "PWM_MAIN_FUNC4": 104}
+    hover_ulog(tmp_path / "o.ulg", with_esc=False, n_outputs=8, params=params)
+    with pytest.raises(FlightLogError, match=r"motor\(s\) 1, 3, 4; PWM_MAIN_FUNC2 = 101 as PWM_MAIN_FUNC1: a motor "
+                                             r"assigned twice\)"):
+        read_flight_log(tmp_path / "o.ulg", motor_map=(0.0, 10.0), n_motors=4)

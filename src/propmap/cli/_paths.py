@@ -5,6 +5,7 @@ vehicle file names (inputs too). The checks of docs/cli.md, "Outputs are never i
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 from ..io.qprop_file import _spec_file
@@ -116,12 +117,17 @@ def check_outputs(outputs, inputs) -> None:
         seen[real] = option
 
 
+#: a process's open descriptor under /proc (/proc/self/fd/1, /proc/1234/fd/3, /proc/thread-self/fd/0)
+_PROC_FD = re.compile(r"/proc/(self|thread-self|[0-9]+)(/task/[0-9]+)?/fd/")
+
+
 def _stream(p: Path, depth: int = 0) -> bool:
     """Whether ``p`` names a standard stream or an open descriptor (/dev/stdout, /dev/fd/1,
     /proc/self/fd/1, or a link to one): written through, an atomic write would replace the
     redirected file (`--out /dev/stdout >> log.txt` emptied log.txt: a review)."""
     text = os.path.abspath(p)
-    if text in ("/dev/stdin", "/dev/stdout", "/dev/stderr") or text.startswith(("/dev/fd/", "/proc/")):
+    # (any path under /proc was called a stream: /proc/a.toml, which cannot be written, is a folder's refusal)
+    if text in ("/dev/stdin", "/dev/stdout", "/dev/stderr") or text.startswith("/dev/fd/") or _PROC_FD.match(text):
         return True
     try:
         target = os.readlink(p) if os.path.islink(p) else ""

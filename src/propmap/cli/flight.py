@@ -40,12 +40,16 @@ def _motor_map(text: str | None):
 def _logs(paths, motor_map=None, n_motors=None):
     from ..io.flightlog import FlightLogError, read_flight_log
 
-    if motor_map is not None and any(Path(p).suffix.lower() != ".ulg" for p in paths):
-        raise InputError("--motor-map applies to PX4 .ulg logs only (a NeuroBEM log gives the motor speeds)")
+    if motor_map is not None and not any(Path(p).suffix.lower() == ".ulg" for p in paths):
+        raise InputError("--motor-map applies to PX4 .ulg logs only, and no LOG is one (a NeuroBEM log gives the motor "
+                         "speeds)")
     logs = []
     for p in paths:
+        # (the map for the .ulg logs only: a NeuroBEM log and a ULog without esc_status could not be fitted together,
+        # a flight-log audit, 2026-12-01)
+        ulg = Path(p).suffix.lower() == ".ulg"
         try:
-            logs.append(read_flight_log(p, motor_map=motor_map, n_motors=n_motors))
+            logs.append(read_flight_log(p, motor_map=motor_map if ulg else None, n_motors=n_motors if ulg else None))
         except FlightLogError as exc:
             raise InputError(f"LOG: {exc}") from None
         if logs[-1].motor_order.startswith("PX4"):  # (which output or ESC entry is which motor: checkable)
@@ -187,6 +191,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     check_outputs(_flight_out_files(out), vehicle_inputs(vehicle))
     if not (math.isfinite(rate_hz) and 0 < rate_hz <= 1e4):
         raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
+    if moments and veh.inertia is None:  # (before the logs are read: it was said after every log was sampled)
+        raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
     base, air, base_label = load_params(base_spec, option="--base")
     # (a --base file's [body] table is the airframe to start from and hold where not fitted, as --params' is in wrench;
     # it was dropped without a word, its z drag written as 0: a user-level audit, 2026-12-01)
@@ -213,8 +219,6 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                    "it is taken", err=True)
     held_idx = [k for k, n in enumerate(names) if n in held]
     train = samples.select(~np.isin(samples.log_index, held_idx))
-    if moments and veh.inertia is None:
-        raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
     opts = _options(fit_choice, base=base, base_label=base_label,
                     extra_names=AIRFRAME_NAMES)
     n_names = len(opts.names) if opts.names else len(default_flight_names(base))

@@ -33,6 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core._numbers import integer
 from .flightlog_checks import GAP_STEPS, MIN_SAMPLES, FlightLogError, check_log
 from .inputs import MAX_FILE_BYTES, as_path, decode_input_text, header_separator, read_input_bytes, show_path
 from .ulog import read_ulog
@@ -135,6 +136,33 @@ class FlightLog:
         return 1.0 / float(np.median(np.diff(self.t)))
 
 
+#: the most motors a ULog's ``n_motors`` names (PX4's actuator_outputs carry 8 or 16 outputs)
+N_MOTORS_MAX = 16
+
+
+def _checked_motor_args(motor_map, n_motors, fmt: str):
+    """``motor_map`` as two finite floats (a, b), b not 0, and ``n_motors`` as an int in [1,
+    N_MOTORS_MAX], each None where not given; both for a ULog only. ValueError naming the argument
+    (motor_map=(0, 0) made every motor speed a, "0,10" met a bare unpacking error, n_motors=2.5 a
+    TypeError and 0 "no outputs": a flight-log audit, 2026-12-01)."""
+    if fmt != "ulog" and (motor_map is not None or n_motors is not None):
+        raise ValueError(f"motor_map and n_motors apply to PX4 ULog files only (a {fmt} log gives the motor speeds)")
+    if motor_map is not None:
+        try:
+            if isinstance(motor_map, (str, bytes)):  # ("05" would unpack as 0 and 5)
+                raise TypeError
+            a, b = (float(x) for x in motor_map)
+        except (TypeError, ValueError):
+            raise ValueError(f"motor_map must be two numbers (a, b): rpm = a + b * output, "
+                             f"got {motor_map!r:.60}") from None
+        if not (np.isfinite(a) and np.isfinite(b) and b != 0):
+            raise ValueError(f"motor_map's a and b must be finite and b not 0, got {motor_map!r:.60}")
+        motor_map = (a, b)
+    if n_motors is not None:
+        n_motors = integer("n_motors", n_motors, 1, N_MOTORS_MAX, whole_float=False)
+    return motor_map, n_motors
+
+
 def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, float] | None = None,
                     n_motors: int | None = None) -> FlightLog:
     """Read a flight log (module docstring).
@@ -162,6 +190,9 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
     ------
     TypeError
         ``path`` not a str or os.PathLike.
+    ValueError
+        ``motor_map`` not two finite numbers with b not 0, ``n_motors`` not an integer in [1,
+        16], or either given for a NeuroBEM log.
     FlightLogError
         Not a readable regular file (size limit 200 MiB), an unknown format, a malformed
         file, a missing topic or column (named, with those found), fewer than 2 samples,
@@ -187,6 +218,7 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
                                  "read_flight_log's format)")
     if fmt not in FORMATS:
         raise FlightLogError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
+    motor_map, n_motors = _checked_motor_args(motor_map, n_motors, fmt)
     raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES,
                            too_large=": split the flight into logs under it (at 400 Hz an uncompressed NeuroBEM .mat "
                                      "holds about 26 minutes; fit flight takes several logs)")

@@ -6,7 +6,8 @@ column mistake) or not finite, negative motor speeds, an attitude quaternion not
 an accelerometer whose mean reading is not gravity plus the log's acceleration (g units,
 gravity removed, a z-down frame), rates that are the attitude's change times 57 or its negative
 (deg/s, another frame), a velocity that the accelerations do not integrate to, and a logged
-angular acceleration unlike the rates' change; it warns of gaps in the time and of isolated
+angular acceleration unlike the rates' change or motor acceleration unlike the motor speeds'
+(or sampled faster than MAX_RATE_HZ); it warns of gaps in the time and of isolated
 spikes. The limits are this module's constants, each with what it was set on.
 """
 
@@ -71,6 +72,16 @@ KINEMATIC_RATIO = 0.5
 ANGULAR_ACCELERATION_RATIO = (0.3, 3.0)
 ANGULAR_ACCELERATION_WINDOW = 0.05  # [s]
 ANGULAR_ACCELERATION_JUDGED = 1.0  # [rad/s^2]
+#: the same for a logged motor acceleration (NeuroBEM's dmot columns) against the motor speeds' change, judged where
+#: they change by this rms or more [rad/s^2] (the four shared segments: 177-1,231 rad/s^2, ratios 0.992-0.997; in
+#: rpm/s 9.5 and 1e6 times too large were read without a word, their spin-up moments with them: a flight-log audit,
+#: 2026-12-01)
+ROTOR_ACCELERATION_JUDGED = 10.0  # [rad/s^2]
+#: a motor acceleration beyond this is refused [rad/s^2] (0 to 1000 rad/s in 1 ms; the shared segments reach 2.5e4)
+ROTOR_ACCELERATION_MAX = 1e6
+#: a log sampled faster than this is refused [Hz] (a time in another unit; flight_samples takes at most 10 kHz, and a
+#: 20 kHz log lost every other sample, said as stopped rotors: a flight-log audit, 2026-12-01)
+MAX_RATE_HZ = 1e4
 
 
 class FlightLogError(ValueError):
@@ -119,6 +130,9 @@ def check_log(log: FlightLog, name: str) -> None:
                              f"{units}a log's time is read in seconds, and a flight "
                              f"log sampled below {MIN_RATE_HZ:g} Hz does not resolve the vehicle's motion (its "
                              "angular acceleration is differentiated from the rates)")
+    if log.rate_hz > (1 + 1e-3) * MAX_RATE_HZ:
+        raise FlightLogError(f"{name}: the time steps by {1 / log.rate_hz:.6g} s in the median ({log.rate_hz:.4g} Hz), "
+                             f"faster than the {MAX_RATE_HZ:g} Hz a flight log is read at: is the time in seconds?")
     # (the attitude first: a ULog's velocity is turned into body axes with it, and a NaN quaternion was said as a NaN
     # velocity, a file audit, 2026-12-01)
     checks = [("attitude", log.attitude, math.inf, ""),
@@ -128,6 +142,8 @@ def check_log(log: FlightLog, name: str) -> None:
               ("rotor_omega", log.rotor_omega, OMEGA_MAX, "rad/s")]
     if log.angular_acceleration is not None:  # (a logged derivative's NaN surfaced later as 'FlightSamples.moment')
         checks.append(("angular_acceleration", log.angular_acceleration, math.inf, "rad/s^2"))
+    if log.rotor_acceleration is not None:
+        checks.append(("rotor_acceleration", log.rotor_acceleration, ROTOR_ACCELERATION_MAX, "rad/s^2"))
     for what, a, limit, unit in checks:
         bad = ~np.isfinite(a) | (np.abs(a) > limit)
         if bad.any():
@@ -220,36 +236,59 @@ def _check_frames(log: FlightLog, name: str) -> None:
 
 def _check_angular_acceleration(log: FlightLog, name: str) -> None:
     """A logged angular acceleration (NeuroBEM's columns 2-4, the measured moments' I dw/dt) against
-    the logged rates' change over ANGULAR_ACCELERATION_WINDOW s, the logged one's trapezoid mean over
-    the same windows: refused where the two least-squares ratios (of either on the other, which
+    the logged rates' change (:func:`_derivative_ratio`), judged where the rates change by
+    ANGULAR_ACCELERATION_JUDGED rad/s^2 rms or more (in deg/s^2 57, zeros 0, negated -1, each read
+    without a word, the measured moments 57 times too large: an input fuzzing audit, 2026-11-27; the
+    NeuroBEM segments 0.97-0.99, a review's consistent logs at 20-50 Hz 0.98-0.997 and its
+    noisy-gyro one 0.90 and 0.97); and a logged motor acceleration (NeuroBEM's dmot columns, the
+    spin-up moment's) against the motor speeds' change, judged from ROTOR_ACCELERATION_JUDGED."""
+    if log.angular_acceleration is not None:
+        b1 = _derivative_ratio(log, log.angular_velocity, log.angular_acceleration, ANGULAR_ACCELERATION_JUDGED)
+        if b1 is not None:
+            # (1/57.3: the rates in deg/s, the acceleration in rad/s^2; on a slow log the rates' own check does not
+            # judge, and this said "zeros or another quantity?": a flight-log audit, 2026-11-30)
+            why = ("in deg/s^2?" if 20 <= b1 <= 150 else
+                   "are the rates in deg/s (the ratio near 1/57.3)?" if 1 / 150 <= b1 <= 1 / 20 else _odd_ratio(b1))
+            raise FlightLogError(f"{name}: the logged angular acceleration is {b1:.3g} times the logged rates' change "
+                                 f"(within {ANGULAR_ACCELERATION_RATIO[0]:g}-{ANGULAR_ACCELERATION_RATIO[1]:g} "
+                                 f"expected): {why} It is read in rad/s^2, body axes (the measured moment is I dw/dt + "
+                                 "w x I w)")
+    if log.rotor_acceleration is not None:
+        b1 = _derivative_ratio(log, log.rotor_omega, log.rotor_acceleration, ROTOR_ACCELERATION_JUDGED)
+        if b1 is not None:
+            why = "in rpm/s (the ratio near 9.55)?" if 6 <= b1 <= 14 else _odd_ratio(b1, "negated?")
+            raise FlightLogError(f"{name}: the logged motor acceleration is {b1:.3g} times the logged motor speeds' "
+                                 f"change (within {ANGULAR_ACCELERATION_RATIO[0]:g}-{ANGULAR_ACCELERATION_RATIO[1]:g} "
+                                 f"expected): {why} It is read in rad/s^2 (the spin-up moment's)")
+
+
+def _odd_ratio(b1: float, against: str = "another frame or sign?") -> str:
+    """The likely cause of a logged derivative ``b1`` times its variable's change, in words
+    (``against`` where they correlate negatively)."""
+    lo = ANGULAR_ACCELERATION_RATIO[0]
+    return "zeros or another quantity?" if abs(b1) < lo else against if b1 < 0 else "another unit or column?"
+
+
+def _derivative_ratio(log: FlightLog, values: np.ndarray, logged: np.ndarray, judged: float) -> float | None:
+    """None where the logged derivative ``logged`` of ``values`` (rows at the log's times) is
+    plausible, else the least-squares ratio of it on the values' change over
+    ANGULAR_ACCELERATION_WINDOW s (the logged one's trapezoid mean over the same windows): a
+    derivative is implausible where the two least-squares ratios (of either on the other, which
     noise in one or the other pulls apart) both lie outside ANGULAR_ACCELERATION_RATIO, or they
-    correlate negatively, where the rates change by ANGULAR_ACCELERATION_JUDGED rad/s^2 rms or more
-    (in deg/s^2 57, zeros 0, negated -1, each read without a word, the measured moments 57 times
-    too large: an input fuzzing audit, 2026-11-27; the NeuroBEM segments 0.97-0.99, a review's
-    consistent logs at 20-50 Hz 0.98-0.997 and its noisy-gyro one 0.90 and 0.97)."""
-    if log.angular_acceleration is None:
-        return
+    correlate negatively, where the values change by ``judged`` rms or more."""
     k = max(1, int(round(ANGULAR_ACCELERATION_WINDOW * log.rate_hz)))
     if log.n <= k:
-        return
-    d = (log.angular_velocity[k:] - log.angular_velocity[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
-    if np.sqrt(np.mean(d**2)) < ANGULAR_ACCELERATION_JUDGED:
-        return
-    logged = _window_means(log.t, log.angular_acceleration, k)
-    ld, dd, ll = float(np.sum(logged * d)), float(np.sum(d * d)), float(np.sum(logged * logged))
+        return None
+    d = (values[k:] - values[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
+    if np.sqrt(np.mean(d**2)) < judged:
+        return None
+    means = _window_means(log.t, logged, k)
+    ld, dd, ll = float(np.sum(means * d)), float(np.sum(d * d)), float(np.sum(means * means))
     lo, hi = ANGULAR_ACCELERATION_RATIO
     b1 = ld / dd
     if ld > 0 and (ll / ld >= lo and b1 <= hi):  # ([b1, b2] meets [lo, hi]: b1 <= b2 where they correlate)
-        return
-    # (1/57.3: the rates in deg/s, the acceleration in rad/s^2; on a slow log the rates' own check does not judge,
-    # and this said "zeros or another quantity?": a flight-log audit, 2026-11-30)
-    why = ("in deg/s^2?" if 20 <= b1 <= 150 else
-           "are the rates in deg/s (the ratio near 1/57.3)?" if 1 / 150 <= b1 <= 1 / 20 else
-           "zeros or another quantity?" if abs(b1) < lo else "another frame or sign?" if b1 < 0 else
-           "another unit or column?")
-    raise FlightLogError(f"{name}: the logged angular acceleration is {b1:.3g} times the logged rates' change "
-                         f"(within {lo:g}-{hi:g} expected): {why} It is read in rad/s^2, body axes (the measured "
-                         "moment is I dw/dt + w x I w)")
+        return None
+    return b1
 
 
 def _check_rates(log: FlightLog, q, name: str) -> None:

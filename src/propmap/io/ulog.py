@@ -483,7 +483,8 @@ def _output_motor_order(ulog, n_motors: int | None, name: str, error: type[Value
     Control allocation: motor m is on output i where ``<PREFIX>_FUNC<i>`` = 100 + m (PX4's
     Motor1 = 101, :data:`MOTOR1_FUNCTION`); one driver (prefix) must carry motors 1..n, as
     actuator_outputs is read from one instance (several that do: the first prefix in name
-    order, the others named in the description). Mixer files (no FUNC parameter, or
+    order, the others named in the description; a motor on several outputs of it is read from the
+    lowest, which carries the same command). Mixer files (no FUNC parameter, or
     SYS_CTRL_ALLOC = 0 in v1.13; not SYS_CTRL_ALLOC = 1, whose dynamic mixing ignores it) with
     ``MOT_ORDERING`` = 1 (Betaflight's order; PX4's MixingOutput::reorderOutputs writes motor 4
     on output 1 and motors 1-3 on outputs 2-4 before it publishes actuator_outputs): motors
@@ -494,10 +495,13 @@ def _output_motor_order(ulog, n_motors: int | None, name: str, error: type[Value
     funcs = sorted((m.group(1), int(m.group(2)), int(v), k) for k, v in p.items()
                    if (m := _FUNC_PARAMETER.fullmatch(k)))  # (prefix, output from 1, function, name)
     if funcs and p.get("SYS_CTRL_ALLOC", 1) != 0:
-        motors = {}  # prefix -> {motor: lowest output index}
-        for prefix, i, v, _ in funcs:
+        motors, twice = {}, []  # prefix -> {motor: lowest output index}; motors assigned to more outputs than one
+        for prefix, i, v, k in funcs:
             if MOTOR1_FUNCTION <= v < MOTOR1_FUNCTION + MOTOR_FUNCTIONS:
-                motors.setdefault(prefix, {}).setdefault(v - MOTOR1_FUNCTION + 1, i - 1)
+                m = v - MOTOR1_FUNCTION + 1
+                if m in motors.get(prefix, {}):  # (the same command on both: the lowest output is read)
+                    twice.append(f"{k} = {v} as {prefix}_FUNC{motors[prefix][m] + 1}")
+                motors.setdefault(prefix, {}).setdefault(m, i - 1)
         if not motors:
             raise error(f"{name}: the log's output functions ({', '.join(sorted(f[3] for f in funcs)[:3])}"
                         f"{' ...' if len(funcs) > 3 else ''}) assign no output a motor (Motor1..Motor12 = "
@@ -506,7 +510,9 @@ def _output_motor_order(ulog, n_motors: int | None, name: str, error: type[Value
         whole = [q for q, m in motors.items() if all(k in m for k in range(1, n + 1))]
         if not whole:
             said = "; ".join(f"{q}_FUNCn: motor(s) {', '.join(map(str, sorted(m)))}" for q, m in motors.items())
-            raise error(f"{name}: no output driver carries motors 1..{n} ({said}); the motor speeds are read "
+            # (a motor assigned twice was not named, the missing one's cause: a flight-log audit, 2026-12-01)
+            dup = f"; {', '.join(twice)}: a motor assigned twice" if twice else ""
+            raise error(f"{name}: no output driver carries motors 1..{n} ({said}{dup}); the motor speeds are read "
                         "from one actuator_outputs instance")
         prefix = whole[0]
         if max(motors[prefix]) > n:

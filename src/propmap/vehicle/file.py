@@ -76,7 +76,7 @@ from ..io.inputs import as_path, short_path, show_path
 from ..io.qprop_file import _qprop_from
 from ..io.toml_file import load_toml
 from ._plausibility import _warn_implausible
-from .layout import Rotor, Vehicle
+from .layout import INERTIA_MAX, Rotor, Vehicle, check_inertia
 
 __all__ = ["VehicleFileError", "read_vehicle", "rotor_file_specs"]
 
@@ -86,7 +86,6 @@ GRAVITY_RANGE = (0.0, 100.0, True)  # [m/s^2]
 BODY_AREA_RANGE = (0.0, 100.0, False)  # [m^2]
 POSITION_MAX = 100.0  # [m], each component
 AXIS_LENGTH_RANGE = (1e-6, 1e6)
-INERTIA_MAX = 1e6  # [kg m^2], each element
 ROTOR_INERTIA_RANGE = (0.0, 100.0, False)  # [kg m^2]
 BLADES_RANGE = (1, 100)
 DIAMETER_RANGE = (0.0, 100.0, True)  # [m]
@@ -155,10 +154,10 @@ def _inertia(value, what: str) -> np.ndarray:
     if not np.all(np.isfinite(m)) or np.any(np.abs(m) > INERTIA_MAX):
         raise VehicleFileError(f"{what} must have finite elements within +-{INERTIA_MAX:g} kg m^2, "
                                f"got {short_repr(value)}")
-    if not np.allclose(m, m.T, rtol=1e-9, atol=1e-15):
-        raise VehicleFileError(f"{what} must be symmetric, got {short_repr(value)}")
-    if np.min(np.linalg.eigvalsh(m)) <= 0:
-        raise VehicleFileError(f"{what} must be positive definite (all principal moments > 0), got {short_repr(value)}")
+    try:  # (the Vehicle's own rule: symmetric, positive definite, a rigid body's principal moments)
+        check_inertia(m, what)
+    except ValueError as exc:
+        raise VehicleFileError(str(exc)) from None
     return m
 
 
@@ -191,9 +190,9 @@ def _local_file(spec: str, folder: Path) -> Path | None:
         return None
 
 
-def _rotor_params(spec, folder: Path, where: str):
+def _rotor_params(spec, folder: Path, where: str, itself: Path):
     """A rotor's (or the vehicle's) own parameter set: a file relative to ``folder`` (or absolute),
-    else a named set."""
+    else a named set; refused where it is the vehicle file ``itself``."""
     from ..io.param_sets import resolve_params
     from ..io.params_file import ParamsFileError, read_params
 
@@ -201,6 +200,10 @@ def _rotor_params(spec, folder: Path, where: str):
         raise VehicleFileError(f"{where}: params must be a parameter file or a named set (a string), "
                                f"got {short_repr(spec)}")
     local = _local_file(spec, folder)
+    if local is not None and os.path.realpath(local) == os.path.realpath(itself):  # (it was read as a parameter file,
+        # its missing keys named: a flight-log audit, 2026-12-01)
+        raise VehicleFileError(f"{where}: params: {short_path(spec, quote=True)} is this vehicle file itself; name a "
+                               "parameter file (a fit's output, or [section] in TOML) or a named set")
     try:
         return read_params(local) if local is not None else resolve_params(_qprop_from(spec, folder))
     except (ParamsFileError, KeyError, ValueError) as exc:
@@ -210,14 +213,14 @@ def _rotor_params(spec, folder: Path, where: str):
         raise VehicleFileError(f"{where}: params: {msg}") from None
 
 
-def _own_params(spec, folder: Path, name: str, data: dict):
+def _own_params(spec, folder: Path, name: str, data: dict, itself: Path):
     """Check the vehicle's own parameter set (its top-level ``params``): readable, and not a file
     whose ``[body]`` table gives what the vehicle file ``data`` gives too (the airframe's drag, a
     centre of mass, the rotor interference: the set's would replace the file's without a word).
     Returns (the set, its file's ``[body]`` table or None), which resolve_vehicle applies."""
     from ..io.params_file import read_body
 
-    own = _rotor_params(spec, folder, name)
+    own = _rotor_params(spec, folder, name, itself)
     local = _local_file(spec, folder)
     table = read_body(local) if local is not None else None
     if table is None:
@@ -391,7 +394,7 @@ def _read_vehicle(path) -> tuple[Vehicle, dict, Path, tuple | None]:
     kappa = _number(data.get("rotor_interference", 0.0), f"{name}: rotor_interference", "", INTERFERENCE_RANGE)
     own = None
     if "params" in data:  # (checked, not applied: the vehicle commands' default of --params, module docstring)
-        own = _own_params(data["params"], path.parent, name, data)
+        own = _own_params(data["params"], path.parent, name, data, path)
     rotors, props = [], {}
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
@@ -461,7 +464,7 @@ def _rotor(r, where: str, path: Path, props: dict) -> Rotor:
     prop = props[spec]
     key = ("params", repr(r.get("params")))  # (a set the rotors share read once, as their propeller: stop 96)
     if "params" in r and key not in props:
-        props[key] = _rotor_params(r["params"], path.parent, where)
+        props[key] = _rotor_params(r["params"], path.parent, where, path)
     params = props[key] if "params" in r else None
     j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
     return Rotor(position, axis, spin, prop, params=params, inertia=j_r)  # (Rotor normalises the axis)

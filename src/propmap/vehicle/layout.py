@@ -81,6 +81,34 @@ class Rotor:
             object.__setattr__(self, "inertia", float(self.inertia))
 
 
+#: an inertia tensor's elements are refused beyond this [kg m^2]
+INERTIA_MAX = 1e6
+#: a rigid body's principal moments satisfy I1 + I2 >= I3 for each of them; a measured tensor may miss it by this
+#: fraction of its largest principal moment (a flat airframe is near equality: NeuroBEM's quadrotor 0.0025 + 0.0021
+#: = 1.07 x 0.0043 kg m^2)
+INERTIA_TRIANGLE_SLACK = 0.01
+
+
+def check_inertia(m: np.ndarray, what: str) -> None:
+    """Refuse an inertia tensor ``m`` (3 x 3, finite) that no rigid body has: elements beyond
+    +-INERTIA_MAX, not symmetric, not positive definite, or principal moments that break the
+    triangle inequality beyond INERTIA_TRIANGLE_SLACK (an [0.001, 0.001, 0.0043] passed the file's
+    checks, and a zero or negative tensor the API's: measured moments silently zero or of the wrong
+    sign, a flight-log audit, 2026-12-01). ValueError naming ``what``."""
+    shown = "[" + ", ".join("[" + ", ".join(f"{float(x):.4g}" for x in row) + "]" for row in m) + "]"
+    if np.any(np.abs(m) > INERTIA_MAX):
+        raise ValueError(f"{what} must have elements within +-{INERTIA_MAX:g} kg m^2, got {shown}")
+    if not np.allclose(m, m.T, rtol=1e-9, atol=1e-15):
+        raise ValueError(f"{what} must be symmetric, got {shown}")
+    p = np.linalg.eigvalsh(m)
+    if p[0] <= 0:
+        raise ValueError(f"{what} must be positive definite (all principal moments > 0), got {shown}")
+    if p[2] > p[0] + p[1] + INERTIA_TRIANGLE_SLACK * p[2]:
+        raise ValueError(f"{what}: its principal moments {p[0]:.4g}, {p[1]:.4g}, {p[2]:.4g} kg m^2 break the triangle "
+                         "inequality every rigid body's satisfy (the largest is at most the sum of the other two): a "
+                         f"value mistyped, or in another unit? (got {shown})")
+
+
 def _is_number(x) -> bool:
     """A real number, not a bool (a NumPy scalar or 0-d array of one too: core._numbers.real)."""
     return real(x) is not None
@@ -137,8 +165,9 @@ class Vehicle:
         time constant, a rotor interference outside [0, 3], no rotors or an item of
         ``rotors`` that is not a Rotor (a list is stored as a tuple), a centre of mass that is
         not 3 finite numbers, an inertia that is not a finite 3x3 tensor or its diagonal
-        (stored as the 3x3 tensor), or a body drag that is not a BodyDrag; the message
-        names the field. (:func:`propmap.vehicle.read_vehicle` checks a file's ranges.)
+        (stored as the 3x3 tensor) or is no rigid body's (:func:`check_inertia`), or a body
+        drag that is not a BodyDrag; the message names the field.
+        (:func:`propmap.vehicle.read_vehicle` checks a file's ranges.)
     """
 
     mass: float
@@ -186,6 +215,7 @@ class Vehicle:
             if inertia.shape != (3, 3) or not np.all(np.isfinite(inertia)):
                 raise ValueError(f"Vehicle.inertia must be a 3x3 tensor or its diagonal (3 numbers) [kg m^2], finite, "
                                  f"got {self.inertia!r:.60}")
+            check_inertia(inertia, "Vehicle.inertia")
             object.__setattr__(self, "inertia", inertia)
         if self.body_drag is not None and not isinstance(self.body_drag, BodyDrag):
             raise ValueError(f"Vehicle.body_drag must be a BodyDrag or None, got {type(self.body_drag).__name__}")

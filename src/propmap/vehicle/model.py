@@ -44,6 +44,7 @@ from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEG
                            RotorLoads, check_model_args, model_air, rotor_loads,
                            supersonic_tips_allowed)
 from ..core.vector import VELOCITY_INPUTS, checked_frame, wrench_vectors
+from ..io.flightlog_checks import ROTOR_ACCELERATION_MAX
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
 from ._kinematics import _samples, hub_moments, hub_velocity_loop
@@ -119,7 +120,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     wind : array_like, shape (N, 3) or (3,), optional
         Wind velocity in body axes [m/s]; default none.
     rotor_acceleration : array_like, shape (N, n_rotors) or (n_rotors,), optional
-        dOmega_i/dt [rad/s^2] for the spin-up reaction (rotors with a known inertia).
+        dOmega_i/dt [rad/s^2] for the spin-up reaction (rotors with a known inertia), within
+        +-ROTOR_ACCELERATION_MAX (1e6 rad/s^2).
     body_drag : BodyDrag, optional
         Airframe drag; default the vehicle's (none if it has none).
     air : Air, optional
@@ -159,7 +161,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     ------
     ValueError
         An input that is not numbers, of the wrong shape, non-finite, samples counts that
-        do not match, a ``vehicle.rotor_interference`` outside [0, 3], or the ranges of
+        do not match, a ``rotor_acceleration`` beyond its range, a
+        ``vehicle.rotor_interference`` outside [0, 3], or the ranges of
         :func:`propmap.rotor_loads` (naming the input); ``derivatives`` with rotor
         interference, or where :func:`propmap.rotor_loads` refuses them.
     TypeError
@@ -230,8 +233,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
 
 def _checked_samples(velocity, angular_velocity, rotor_omega, wind, rotor_acceleration, n_rot: int):
     """vehicle_wrench's sample arrays, checked: (v, w, rotor_omega, wind, rotor_acceleration or None,
-    N), each with 1 or N rows as given; ValueError for a rate out of [0, OMEGA_MAX] or row counts
-    that differ."""
+    N), each with 1 or N rows as given; ValueError for a rate out of [0, OMEGA_MAX], a rotor
+    acceleration beyond ROTOR_ACCELERATION_MAX or row counts that differ."""
     v = _samples("velocity", velocity, 3)
     w = _samples("angular_velocity", angular_velocity, 3)
     om = _samples("rotor_omega", rotor_omega, n_rot)
@@ -245,6 +248,10 @@ def _checked_samples(velocity, angular_velocity, rotor_omega, wind, rotor_accele
                          f"{n + 1}; rpm given for rad/s?)")
     wind_a = np.zeros((1, 3)) if wind is None else _samples("wind", wind, 3)
     acc = None if rotor_acceleration is None else _samples("rotor_acceleration", rotor_acceleration, n_rot)
+    if acc is not None and (np.abs(acc) > ROTOR_ACCELERATION_MAX).any():  # (1e30 gave a yaw moment of 9.4e24 N m)
+        n, i = np.argwhere(np.abs(acc) > ROTOR_ACCELERATION_MAX)[0]
+        raise ValueError(f"rotor_acceleration must be within +-{ROTOR_ACCELERATION_MAX:g} rad/s^2, got {acc[n, i]:g} "
+                         f"for rotor {i + 1} (sample {n + 1}; rpm/s or another unit given for rad/s^2?)")
     arrays = [v, w, om, wind_a] + ([] if acc is None else [acc])
     counts = {a.shape[0] for a in arrays} - {1}
     if len(counts) > 1:
