@@ -89,13 +89,12 @@ def torque_change_at_constant_thrust(
     missing = np.asarray(hover.n_solutions).reshape(-1) == 0
     if missing.any() and on_missing == "raise":  # (the hover trim's own error named its airspeed 0 and incidence 0
         # where the caller's descent was 1 m/s at 180 deg: an export audit)
-        i = int(np.argmax(missing))
-        V, b, T = (np.broadcast_to(a, np.shape(loads.thrust)).reshape(-1)[i]
-                   for a in (loads.airspeed, loads.incidence, loads.thrust))
-        om = np.asarray(loads.omega).reshape(-1)[i]
+        i, (lo, hi) = int(np.argmax(missing)), _check_bounds(bounds)
+        om, V, b, T = (np.broadcast_to(a, np.shape(loads.thrust)).reshape(-1)[i]
+                       for a in (loads.omega, loads.airspeed, loads.incidence, loads.thrust))
         raise TrimError(f"no hover reference at operating point {_where(i, np.shape(loads.thrust))}(omega={om:.6g} "
                         f"rad/s = {om / RPM:.6g} rpm, airspeed={V:.6g} m/s, incidence={math.degrees(b):.6g} deg): "
-                        f"no collective in [{math.degrees(bounds[0]):.4g}, {math.degrees(bounds[1]):.4g}] deg makes "
+                        f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes "
                         f"its thrust, {T:.6g} N, in hover at that omega (a descent's thrust above hover's most, or a "
                         "negative thrust in the windmill brake; on_missing='nan' gives NaN there)")
     hover = _hover_nearest(propeller, params, loads, 0.0 if collective is None else collective, hover, air,
