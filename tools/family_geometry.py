@@ -7,7 +7,8 @@ and prior fitted without the family, as `propmap validate --all` scores.
     .venv/bin/python tools/family_geometry.py da4002     # (and da4052; about 2 minutes each on 2 cores)
 
 Data: UIUC Propeller Data Site vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), as bundled; da4002_geom.txt
-from ../shared/data/uiuc_propdb/v2 (the package does not ship it).
+from ../shared/data/uiuc_propdb/v2 (the package does not ship it). Results: docs/validation.md, Where the model
+is still wrong (a family's design file as another pitch's geometry).
 """
 
 import argparse

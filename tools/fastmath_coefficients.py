@@ -7,6 +7,8 @@ to monomial form for Horner evaluation:
 * exp: exp(y) on y in [-0.625, 0.625] (= [-40, 40] / 64), degree 12.
 
 Run:  .venv/bin/python tools/fastmath_coefficients.py
+
+The approximations and their errors: docs/solver.md (the element's branch-free polynomials).
 """
 
 import argparse

@@ -13,6 +13,8 @@ preset says so.
 
     .venv/bin/python tools/fit_section_presets.py
 
+The presets and their fit: docs/models.md, Section presets for symmetric rotor blades.
+
 The reference Reynolds number is 3.6e5 (model rotors of 0.6-0.9 m radius; a small
 propeller's sections sit near 1e5, where the presets are extrapolated in Re).
 """
