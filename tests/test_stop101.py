@@ -363,3 +363,20 @@ def test_a_motor_assigned_twice_is_named_where_another_is_missing(tmp_path):
     with pytest.raises(FlightLogError, match=r"motor\(s\) 1, 3, 4; PWM_MAIN_FUNC2 = 101 as PWM_MAIN_FUNC1: a motor "
                                              r"assigned twice\)"):
         read_flight_log(tmp_path / "o.ulg", motor_map=(0.0, 10.0), n_motors=4)
+
+
+def test_write_export_refuses_a_vehicle_of_another_propeller(tmp_path):
+    """write_export(res, path, vehicle=) wrote quad_params for a vehicle whose rotors carry another propeller than the
+    coefficients' (the CLI refused it; the API did not)."""
+    import warnings
+
+    from propmap.simexport import export_sim, write_export
+
+    prop = pm.load_propeller("apce_10x7")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = export_sim("rotorpy", prop, pm.default_params("apce_10x7"), n_points=40)
+    with pytest.raises(ValueError, match=r"vehicle: rotor 1 carries apce_8x6 \(radius 0.1016 m\), not the exported "
+                                         r"apce_10x7 \(radius 0.127 m\)"):
+        write_export(res, tmp_path / "q.py", vehicle=pm.read_vehicle("quadrotor"))
+    assert not any(tmp_path.iterdir())
