@@ -109,6 +109,9 @@ def test_c_header_text_checks_the_vehicle_and_cites_the_propeller(small_map):
     text = c_header_text(rm, "x.h")
     assert "Data: geometry: APC Propellers PE0 geometry" in text and "Data: -" not in text
     assert "/* the rotor radius R [m] */" in text and "N m / (m/s)^2" in text
+    own = small_map[2].copy()  # (a user's geometry file under the catalogue's name: its reader's words, no citation)
+    own.attrs["propeller_source"] = "UIUC Propeller Data Site geometry file apce_8x6_geom.txt"
+    assert "Data: -" in c_header_text(RotorMap(own), "x.h")
 
 
 # ---- the simulator export ----------------------------------------------------------------------------------------
@@ -187,7 +190,9 @@ def test_torque_change_names_the_operating_point_without_a_hover_reference(apc8x
     """In a slow descent (800 rad/s, 1 m/s at 180 deg) the thrust, 4.07 N, is above hover's most at that rate: the
     TrimError named the hover trim's airspeed 0 and incidence 0, and one such point stopped a whole array."""
     V = np.array([0.0, 1.0, 3.0, 12.0])
-    with pytest.raises(pm.TrimError, match=r"no hover reference .*airspeed=1 m/s, incidence=180 deg"):
+    with pytest.raises(pm.TrimError, match=r"makes thrust=4.07\d* N in hover at omega=800 rad/s = 7639.44 rpm, the "
+                                           r"hover reference of operating point \(1,\) \(airspeed=1 m/s, incidence=180 "
+                                           r"deg\): a descent's thrust above the most hover makes"):
         pm.torque_change_at_constant_thrust(apc8x6, cal, 800.0, V, math.pi)
     d, loads, hover = pm.torque_change_at_constant_thrust(apc8x6, cal, 800.0, V, math.pi, on_missing="nan")
     assert np.isnan(d[1]) and np.isnan(hover.collective[1]) and hover.n_solutions[1] == 0
@@ -380,3 +385,35 @@ def test_write_export_refuses_a_vehicle_of_another_propeller(tmp_path):
                                          r"apce_10x7 \(radius 0.127 m\)"):
         write_export(res, tmp_path / "q.py", vehicle=pm.read_vehicle("quadrotor"))
     assert not any(tmp_path.iterdir())
+
+
+# ---- conventions (a third audit's: the docs' conventions against the code) -----------------------------------------
+def test_catalogue_rates_are_converted_by_rpm_everywhere():
+    """loads_from_catalogue and the validation's sweeps converted 2 pi (rpm / 60), which differs from rpm * RPM in the
+    last bit for a third of rates (3050 rpm: 319.3952531149623 against 319.39525311496226); nomenclature.md says
+    every conversion goes through RPM, so that two agree to the bit."""
+    from propmap.identify import loads_from_catalogue
+    from propmap.io.catalogue import get_entry
+    from propmap.validation.runs import validate
+
+    entry = get_entry("apce_8x6")
+    prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    data = loads_from_catalogue(entry, prop.diameter)
+    rpm = np.concatenate([s.rpm for s in entry.static_runs()] + [np.full(w.J.size, w.rpm) for w in entry.sweeps()])
+    assert np.array_equal(data.omega, rpm * RPM)
+    assert np.any(rpm * RPM != 2 * math.pi * (rpm / 60))  # (the two conversions differ on these data)
+    sweep = next(r for r in validate(entry, prop, params).runs if r.kind == "sweep")
+    r = pm.rotor_loads(prop, params, sweep.rpm * RPM, sweep.J * (sweep.rpm / 60.0) * prop.diameter, 0.0)
+    assert np.array_equal(sweep.CT_model, r.CT)
+
+
+def test_a_mu_column_is_told_how_it_converts(tmp_path):
+    """The message said 'mu n D for mu', 3.1 times too small edgewise: with mu = V sin(beta) / (Omega R) (the
+    nomenclature's), V = pi mu n D / sin(beta)."""
+    from propmap.identify import read_loads
+    from propmap.identify.data import DataError
+
+    rows = "".join(f"{4000 + 500 * k},0.1,45,{1 + 0.1 * k},0.01,{0.02 + 0.001 * k}\n" for k in range(8))
+    (tmp_path / "m.csv").write_text("rpm,mu,incidence_deg,thrust,drag,torque\n" + rows)
+    with pytest.raises(DataError, match=r"for mu = V sin\(incidence\) / \(Omega R\), V = pi mu n D / sin\(incidence\)"):
+        read_loads(tmp_path / "m.csv")

@@ -19,6 +19,7 @@ import numpy as np
 
 from .core.air import air_words
 from .core.units import RPM
+from .io.catalogue import catalogue_source
 from .io.inputs import as_path
 from ._c_templates import CUBIC_BODY, CUBIC_DECL, CUBIC_WEIGHTS, LINEAR_BODY, LINEAR_DECL, TEMPLATE, VEHICLE
 
@@ -371,7 +372,9 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         source=_comment(a.get("propmap_source_sha256", "") or "not recorded"), model=_comment(a.get("model", "")),
         uncertainty=unc,
         params_label=_comment((a.get("params_label", "") or a.get("section_model", "")) + _air_words(a)),
-        citation=_comment(a.get("citation", "") or a.get("propeller_source", "") or "-"), n0=n0, n1=n1, n2=n2,
+        citation=_comment(a.get("citation", "") or catalogue_source(a.get("propeller", ""),
+                                                                   a.get("propeller_source", "")) or "-"),
+        n0=n0, n1=n1, n2=n2,
         rpm0=rm.omega[0] / RPM,
         rpm1=rm.omega[-1] / RPM, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),
         b1=np.degrees(rm.incidence[-1]), ctype=dtype, eT=_pct(a.get(check + "thrust_max")),

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import click
 
+from ..core.units import RPM
 from ._air import resolve_air, with_air_options
 from ._common import (Command, InputError, PathArg, _short, theta75_deg, check_section_match, load_params, option_group,
                        parse_names, warn, with_prop_options)
@@ -137,7 +138,7 @@ def _coverage(data, prop, air) -> dict:
     # (the largest climb advance ratio; 0 for data all in descent, whose V cos(incidence) is negative)
     return {"J_max": j_max(data.airspeed * np.cos(data.incidence), n, prop.diameter),
             "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
-            "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
+            "rpm_min": float(np.min(data.omega) / RPM), "rpm_max": float(np.max(data.omega) / RPM),
             "airspeed_max": float(np.max(data.airspeed)),
             **_propeller_keys(prop, float(data.omega.min()), float(data.omega.max()), air),
             **({} if data.collective is None else {"collective_deg_min": float(np.degrees(np.min(data.collective))),
@@ -277,7 +278,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
     moving = d.airspeed > 0.3  # (a hover row's incidence names no flow)
     coverage = {"J_max": j_max(V_axial, n, D),
                 "incidence_deg_max": float(np.degrees(np.max(forces["beta"][moving]))) if moving.any() else 0.0,
-                "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
+                "rpm_min": float(np.min(d.omega) / RPM), "rpm_max": float(np.max(d.omega) / RPM),
                 "airspeed_max": float(np.max(d.airspeed)),
                 **_vehicle_propeller(veh, float(np.min(d.omega)), float(np.max(d.omega)), air),
                 "data": Path(data).name, "files_sha256": file_digests([data])}

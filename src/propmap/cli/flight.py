@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from ..core.units import RPM
 from ._air import air_label, air_record, resolve_air, with_air_options
 
 from ._common import Command, InputError, PathArg, load_params, parse_names
@@ -376,7 +377,8 @@ def _flight_coverage(logs, veh, air) -> dict:
     moving = speed > 0.01 * s.rotor_omega * D / 2
     return {"J_max": j_max(axial, n, D),
             "incidence_deg_max": float(np.degrees(np.max(inc[moving]))) if moving.any() else 0.0,
-            "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed)),
+            "rpm_min": float(np.min(s.rotor_omega) / RPM), "rpm_max": float(np.max(s.rotor_omega) / RPM),
+            "airspeed_max": float(np.max(speed)),
             **_vehicle_propeller(veh, float(np.min(s.rotor_omega)), float(np.max(s.rotor_omega)), air)}
 
 

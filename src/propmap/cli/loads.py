@@ -186,7 +186,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 @click.option("--rpm", type=float, help=f"Rotation rate [rpm], in [{RPM_MIN:g}, {RPM_MAX:.0f}].")
 @click.option("--airspeed", type=float, default=None, help="Airspeed V [m/s], in [0, 500] (default 0).")
 @click.option("--incidence-deg", type=float, default=None,
-              help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent (default 0).")
+              help="Angle between the rotor's velocity through the air and its axis [deg]: 0 climb, 90 edgewise, "
+                   "180 descent (default 0).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
 @click.option("--collective-deg", type=float, default=None,
               help=f"Collective: a blade-angle offset [deg] added to every blade angle, in "

@@ -26,7 +26,8 @@ RANGE_DEG = (-20.0, 30.0)
                    "rpm is trimmed, at the parameter set's collective.")
 @click.option("--airspeed", type=float, default=0.0, show_default=True, help="Airspeed V [m/s], in [0, 500].")
 @click.option("--incidence-deg", type=float, default=0.0, show_default=True,
-              help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent.")
+              help="Angle between the rotor's velocity through the air and its axis [deg]: 0 climb, 90 edgewise, "
+                   "180 descent.")
 @click.option("--range-deg", nargs=2, type=float, default=None,
               help=f"Collectives searched [deg], within [-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}] (with --rpm; "
                    f"default {RANGE_DEG[0]:g} {RANGE_DEG[1]:g}).")

@@ -268,8 +268,9 @@ def rotor_loads(
     airspeed : float or array_like
         Speed V of the disk relative to the air [m/s], finite, in [0, 500].
     incidence : float or array_like
-        beta [rad] in [0, pi]: the angle between the freestream seen by the disk
-        and the rotor axis (0 axial climb, pi/2 edgewise, pi axial descent);
+        beta [rad] in [0, pi]: the angle between the disk's velocity relative to the air
+        and the rotor axis, the thrust's direction (0 axial climb, pi/2 edgewise, pi axial
+        descent; the freestream the disk meets is the opposite of that velocity);
         docs/numerics.md item 1. Irrelevant when V = 0. A value outside [0, pi] by at most
         2.5e-7 (single precision's pi, 8.7e-8 above it) is taken as that end.
     air : Air, optional

@@ -92,11 +92,11 @@ def torque_change_at_constant_thrust(
         i, (lo, hi) = int(np.argmax(missing)), _check_bounds(bounds)
         om, V, b, T = (np.broadcast_to(a, np.shape(loads.thrust)).reshape(-1)[i]
                        for a in (loads.omega, loads.airspeed, loads.incidence, loads.thrust))
-        raise TrimError(f"no hover reference at operating point {_where(i, np.shape(loads.thrust))}(omega={om:.6g} "
-                        f"rad/s = {om / RPM:.6g} rpm, airspeed={V:.6g} m/s, incidence={math.degrees(b):.6g} deg): "
-                        f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes "
-                        f"its thrust, {T:.6g} N, in hover at that omega (a descent's thrust above hover's most, or a "
-                        "negative thrust in the windmill brake; on_missing='nan' gives NaN there)")
+        raise TrimError(f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T:.6g} N "
+                        f"in hover at omega={om:.6g} rad/s = {om / RPM:.6g} rpm, the hover reference of operating "
+                        f"point {_where(i, np.shape(loads.thrust))}(airspeed={V:.6g} m/s, incidence="
+                        f"{math.degrees(b):.6g} deg): a descent's thrust above the most hover makes at that rate, or a "
+                        "negative thrust in the windmill brake")
     hover = _hover_nearest(propeller, params, loads, 0.0 if collective is None else collective, hover, air,
                            discretization, bounds, ~missing)
     return loads.CQ - hover.loads.CQ, loads, hover

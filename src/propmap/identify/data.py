@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.units import RPM
 from ..core._numbers import checked
 from ..core.air import check_air
 from ..core.airfoil import Air
@@ -163,13 +164,13 @@ def _loads_from_runs(statics, sweeps, diameter, air, name, source, files=None) -
     if files is not None and len(set(labels)) < len(labels):  # (two files of one run name, e.g. sweep_4000.txt and
         # sweep_6000.txt, both run 'sweep': each file its own group, named by its stem, so that one can be held out)
         labels = [Path(f).stem if labels.count(lab) > 1 else lab for lab, f in zip(labels, files)]
-    for s, label in zip(statics, labels):
+    for s, label in zip(statics, labels):  # (omega as rpm * RPM, every conversion's: nomenclature.md)
         n = s.rpm / 60
-        om.append(2 * math.pi * n), V.append(0 * n), grp.append(np.full(n.size, label))
+        om.append(s.rpm * RPM), V.append(0 * n), grp.append(np.full(n.size, label))
         T.append(s.CT * air.rho * n**2 * diameter**4), Q.append(s.CP * air.rho * n**2 * diameter**5 / (2 * math.pi))
     for w, label in zip(sweeps, labels[len(statics):]):
         n = np.full(w.J.size, w.rpm / 60)
-        om.append(2 * math.pi * n), V.append(w.J * n * diameter), grp.append(np.full(n.size, label))
+        om.append(np.full(w.J.size, w.rpm * RPM)), V.append(w.J * n * diameter), grp.append(np.full(n.size, label))
         T.append(w.CT * air.rho * n**2 * diameter**4), Q.append(w.CP * air.rho * n**2 * diameter**5 / (2 * math.pi))
     if not om:
         raise DataError(f"{name} has no measurements")

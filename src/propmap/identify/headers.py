@@ -15,6 +15,11 @@ from ..core.units import RPM
 __all__ = ["ColumnMap", "split_header", "UNITS", "ROTATION_COLUMNS", "OPERATING", "LOOKED_FOR", "G0", "LBF",
            "INCH"]
 
+#: how an advance ratio converts to the airspeed propmap reads (nomenclature.md's J and mu; the mu of a message was
+#: mu n D, 3.1 times too small edgewise: a conventions audit, 2026-12-01)
+RATIO_TO_AIRSPEED = "V = J n D; for mu = V sin(incidence) / (Omega R), V = pi mu n D / sin(incidence)"
+
+
 LBF = 4.4482216152605
 INCH = 0.0254
 #: an ESC signal's units: a pulse width or a throttle in percent (identify/steps.esc_form)

@@ -19,7 +19,7 @@ import numpy as np
 from ..core._numbers import integer
 from ..core.units import RPM
 from .csvfile import RANGES, DataError, _Csv
-from .headers import AXIAL_RATES
+from .headers import AXIAL_RATES, RATIO_TO_AIRSPEED
 from .loads_air import _air_density, _conditions_density
 from .load_data import LOAD_KEYS, STATIC_AIRSPEED, LoadData, radians_hint
 from .load_rows import _optical_gaps, _skip_dropouts, _skip_stopped, _thrust_sign, _torque_sign
@@ -138,7 +138,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")] if "airspeed" not in cm.columns else []
     if "airspeed" not in cm.columns and "incidence_deg" in cm.columns:  # (with J or mu: say how, an audit)
         raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed" + (
-            f" (is {ratio[0]!r} an advance ratio? give the airspeed, V = J n D; mu n D for mu)" if ratio else ""))
+            f" (is {ratio[0]!r} an advance ratio? give the airspeed, {RATIO_TO_AIRSPEED})" if ratio else ""))
     keys = [k for k in LOAD_KEYS if k in cm.columns]
     quantities = [*speeds, *(q for q in ("airspeed", "incidence_deg", "collective_deg", "esc", "time", "air_density",
                                          *AXIAL_RATES) if q in cm.columns), *keys]
@@ -328,7 +328,7 @@ def _check_unread_columns(raw: dict, texts: dict, ratio: list, named: list, what
         if np.nanmax(np.abs(raw[c.lower()]), initial=0.0) > 1e-3:  # (an axial sweep's J read as static: the thrust
             # 11-23% off, a wind-tunnel data audit, 2026-11-27)
             raise DataError(f"{what}: {p}: column {c!r} looks like an advance ratio, which propmap reads only as "
-                            "'airspeed' [m/s] (V = J n D; mu n D for mu): convert it, or remove it; left unread, "
+                            f"'airspeed' [m/s] ({RATIO_TO_AIRSPEED}): convert it, or remove it; left unread, "
                             "every point would be taken as static (airspeed 0)")
     for c in named:
         props = sorted({t.casefold(): t for t in texts[c.lower()] if t}.values())  # (APC 10x7 and apc 10x7 are one)

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import re
 
-from .headers import (_NAMES, _UNIT_ONLY_NAMES, AXIAL_RATES, LOOKED_FOR, UNITS, ColumnMap, _loose, _name_stems, _token,
-                      split_header)
+from .headers import (_NAMES, _UNIT_ONLY_NAMES, AXIAL_RATES, LOOKED_FOR, RATIO_TO_AIRSPEED, UNITS, ColumnMap, _loose,
+                      _name_stems, _token, split_header)
 
 #: names that are not read but mean an airspeed, an advance ratio, a flow angle or load coefficients (a file
 #: with them and without 'airspeed' / 'incidence_deg' / loads is refused, naming them: map_columns)
@@ -199,7 +199,7 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
         if maybe:
             ratio = bases[maybe[0]] in ("j", "mu")  # (an advance ratio is no airspeed: it converts, V = J n D)
             cm.notes.append(f"column {maybe[0]!r} is not read; if it is "
-                            + ("an advance ratio, give the airspeed instead (V = J n D; mu n D for mu)" if ratio else
+                            + (f"an advance ratio, give the airspeed instead ({RATIO_TO_AIRSPEED})" if ratio else
                                f"{what}, name it {read_as}") + f" (every point is taken as {default})")
 
 

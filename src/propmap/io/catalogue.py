@@ -20,8 +20,8 @@ from .inputs import short_path
 from .geometry_files import read_apc_pe0, read_geometry, read_uiuc_geometry
 from .readers import StaticRun, Sweep, read_uiuc_static, read_uiuc_sweep
 
-__all__ = ["CatalogueEntry", "catalogue", "example_file", "example_files", "get_entry", "load_propeller", "near",
-           "near_names", "resolve_propeller"]
+__all__ = ["CatalogueEntry", "catalogue", "catalogue_source", "example_file", "example_files", "get_entry",
+           "load_propeller", "near", "near_names", "resolve_propeller"]
 
 UIUC_CITATION = ("UIUC Propeller Data Site vol. 1, Brandt & Selig, AIAA 2011-1255")
 UIUC_V2_CITATION = ("UIUC Propeller Data Site vol. 2, Deters, Ananda & Selig, AIAA 2014-2151")
@@ -280,6 +280,24 @@ def near_names(name: str, names, otherwise: str = "; run 'propmap props' for the
 
 
 @functools.lru_cache(maxsize=256)
+def catalogue_source(name: str, source: str) -> str:
+    """The citation of a catalogue propeller as :func:`load_propeller` gives it: the entry's
+    citation where ``name`` is a catalogue name and ``source`` (a Propeller's, or a map's
+    ``propeller_source``) is that citation, else "" (a user's geometry file, even under a
+    catalogue name, whose ``source`` says which reader read it, is cited by nothing).
+
+    Parameters
+    ----------
+    name, source : str
+
+    Returns
+    -------
+    str
+    """
+    entry = catalogue().get(name) if isinstance(name, str) else None
+    return entry.citation if entry is not None and source == entry.citation else ""
+
+
 def load_propeller(name: str) -> Propeller:
     """The geometry of a catalogue propeller as a :class:`Propeller`.
 

@@ -23,6 +23,7 @@ from .. import __version__
 from ..core._numbers import SEED_MAX, integer
 from ..core.airfoil import Air
 from ..core.geometry import _real
+from ..io.catalogue import catalogue_source
 from ..core.solver import AIRSPEED_MAX, check_model_args, rotor_loads
 from ..io.provenance import source_digest
 from ..io.uncertainty import model_uncertainty
@@ -427,7 +428,8 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         (``seed`` + 1).
     params_label : str
         Recorded in the result (``meta["params"]``); default the set's own ``label``, else its
-        section model. ``meta["citation"]`` is the propeller's ``source`` where it has one.
+        section model. ``meta["citation"]`` is a catalogue propeller's citation
+        (:func:`propmap.io.catalogue.catalogue_source`).
 
     Returns
     -------
@@ -488,7 +490,7 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
     label = params_label or params.label or params.section_model  # (the set's own label: the file's head said
     # "(cambered)" of calibrated:apce_8x6 where the API was given no params_label, an export audit)
     meta = {"propeller": propeller.name, "params": label,
-            **({"citation": propeller.source} if propeller.source else {}),
+            **({"citation": cited} if (cited := catalogue_source(propeller.name, propeller.source)) else {}),
             "model_uncertainty": {**model_uncertainty(params_label or getattr(params, "label", "")),
                                   "edgewise_trend": _edgewise_trend(propeller, params, air, envelope)},
             "section_model": params.section_model, "propmap_version": __version__,

@@ -10,8 +10,8 @@ radius. Sources of the model forms (each checked against the simulator's source)
   aerodynamics", 2023; ``rotorpy/vehicles/multirotor.py``, ``Multirotor.compute_body_wrench``
   of release 3.0.0): T = k_eta Omega^2 + k_h V_ip^2 - k_z Omega V_z, rotor drag
   D = k_d Omega V_ip, yaw moment rotor_dir k_m Omega^2 about +z, flapping moment
-  -k_flap Omega (v x z). The flapping moment acts about z x e_ip (a pitch-back moment of
-  flapping blades); propmap's model with rigid blades and uniform inflow (the defaults) has
+  -k_flap Omega (v x z). The flapping moment acts about the pitching axis z x e_ip (flapping
+  blades' tilted disk); propmap's model with rigid blades and uniform inflow (the defaults) has
   none about that axis (docs/conventions.md), so k_flap = 0 (a set with flapping, a linear
   inflow model or the dynamic stall is warned about: its pitching moment and side force are
   left out),

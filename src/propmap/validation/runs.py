@@ -4,7 +4,6 @@ D'Andrea 2017): :func:`validate`, :func:`holdout_comparison`.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -229,7 +228,7 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
                                     r.CT, r.CP, np.full_like(s.CT, CT_h), np.full_like(s.CP, CP_h), s.source))
     for w in sweeps:
         n = w.rpm / 60.0
-        r = rotor_loads(propeller, params, 2 * math.pi * n, w.J * n * D, 0.0, air=air, discretization=discretization)
+        r = rotor_loads(propeller, params, w.rpm * RPM, w.J * n * D, 0.0, air=air, discretization=discretization)
         runs.append(SweepComparison("sweep", w.run_id, np.full_like(w.J, w.rpm), w.J, w.CT, w.CP,
                                     r.CT, r.CP, np.full_like(w.CT, CT_h), np.full_like(w.CP, CP_h), w.source))
     from ..io.params_file import params_to_dict
