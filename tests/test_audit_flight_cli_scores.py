@@ -242,22 +242,23 @@ def test_fit_flight_holds_out_a_log_and_records_the_training_coverage(tmp_path, 
                                          rel=1e-6)
 
 
-def test_fit_flight_notes_a_rate_just_above_the_logs(tmp_path, capsys, short_logs):
+def test_fit_flight_notes_a_rate_just_above_the_logs(tmp_path, capsys, short_logs, monkeypatch):
     """Mutant B6 (the note only above twice the log's rate): --rate-hz 500 on a 400 Hz log takes
-    every sample, and says so; 400 Hz says nothing. (Each run stops at --moments on a vehicle file
-    without inertia, after the samples are taken.)"""
-    import shutil
+    every sample, and says so; 400 Hz says nothing. (Each run stops at the training samples'
+    check, after the samples are taken: until 2026-12-01 --moments on a vehicle without inertia
+    stopped it there, now refused before the logs are read.)"""
+    from propmap.cli import flight
+    from propmap.cli._common import InputError
 
-    for f in VEHICLE.parent.iterdir():
-        shutil.copy(f, tmp_path / f.name)
-    no_inertia = tmp_path / VEHICLE.name
-    no_inertia.write_text("\n".join(line for line in no_inertia.read_text().splitlines()
-                                    if not line.startswith("inertia = [")))
+    def stop(*args):
+        raise InputError("stopped after the samples were taken")
+
+    monkeypatch.setattr(flight, "_check_training_samples", stop)
     for rate, noted in (("500", True), ("400", False)):
-        code = main(["fit", "flight", str(short_logs[0]), "--vehicle", str(no_inertia), "--out",
-                     str(tmp_path / "p.toml"), "--rate-hz", rate, "--moments"])
+        code = main(["fit", "flight", str(short_logs[0]), "--vehicle", str(VEHICLE), "--out",
+                     str(tmp_path / "p.toml"), "--rate-hz", rate])
         err = capsys.readouterr().err
-        assert code == 2 and "--moments: the vehicle file gives no inertia" in err, err
+        assert code == 2 and "stopped after the samples were taken" in err, err
         assert ("--rate-hz 500: a log is sampled at 400 Hz, so every sample of it is taken" in err) == noted, err
 
 

@@ -172,24 +172,23 @@ def test_cli_fit_flight_refuses_before_fitting_naming_the_option(tmp_path, capsy
     assert not (tmp_path / "p.toml").exists()
 
 
-def test_cli_fit_flight_notes_a_rate_above_the_logs(tmp_path, capsys, shared_data):
+def test_cli_fit_flight_notes_a_rate_above_the_logs(tmp_path, capsys, shared_data, monkeypatch):
     """--rate-hz above the logs' 400 Hz: a note that every sample is taken; 150 Hz (every 3rd sample,
-    133 Hz) and 400 Hz: none. (Each run stops at --moments on a vehicle file without inertia, after
-    the samples are taken.)"""
-    import shutil
+    133 Hz) and 400 Hz: none. (Each run stops at the training samples' check, after the samples are
+    taken.)"""
+    from propmap.cli import flight
+    from propmap.cli._common import InputError
 
-    folder = VEHICLE.parent
-    for f in folder.iterdir():
-        shutil.copy(f, tmp_path / f.name)
-    no_inertia = tmp_path / VEHICLE.name
-    no_inertia.write_text("\n".join(line for line in no_inertia.read_text().splitlines()
-                                    if not line.startswith("inertia = [")))
+    def stop(*args):
+        raise InputError("stopped after the samples were taken")
+
+    monkeypatch.setattr(flight, "_check_training_samples", stop)
     log = str(shared_data / "neurobem_flights" / SEGMENTS[1])
     for rate, noted in (("1000", True), ("150", False), ("400", False)):
-        code = main(["fit", "flight", log, "--vehicle", str(no_inertia), "--out", str(tmp_path / "p.toml"),
-                     "--rate-hz", rate, "--moments"])
+        code = main(["fit", "flight", log, "--vehicle", str(VEHICLE), "--out", str(tmp_path / "p.toml"),
+                     "--rate-hz", rate])
         err = capsys.readouterr().err
-        assert code == 2 and "--moments: the vehicle file gives no inertia" in err, err
+        assert code == 2 and "stopped after the samples were taken" in err, err
         assert ("a log is sampled at 400 Hz, so every sample of it is taken" in err) == noted, (rate, err)
 
 

@@ -310,10 +310,11 @@ def _apc10x7e(param_sets: dict, air: Air) -> CaseResult:
         _rows("apc10x7E_mccrink_gregory2017_CQ_vs_J.csv"))
     J = ct[:, 0]
     CQm = np.interp(J, cq[:, 0], cq[:, 1])
-    n = 9200 / 60
+    rpm = 9200.0
+    n = rpm / 60
     pred, metrics = {}, {}
     for label, p in param_sets.items():
-        r = rotor_loads(prop, p, 2 * math.pi * n, J * n * prop.diameter, 0.0, air=air, radial=False)
+        r = rotor_loads(prop, p, rpm * RPM, J * n * prop.diameter, 0.0, air=air, radial=False)
         CT, CQ = r.CT, r.CQ
         pred[label] = {"CT": CT, "CQ": CQ}
         dct, dcq = (CT - ct[:, 1]) / ct[0, 1], (CQ - CQm) / CQm[0]
@@ -331,10 +332,10 @@ def _apc10x7e(param_sets: dict, air: Air) -> CaseResult:
 def _dji9443(param_sets: dict, air: Air) -> CaseResult:
     """The DJI 9443's hover CT at 5400 rpm against the measured 0.072 (:func:`run_case`)."""
     prop = dji9443_propeller()
-    n = 5400 / 60
+    rpm = 5400.0
     pred, metrics = {}, {}
     for label, p in param_sets.items():
-        r = rotor_loads(prop, p, 2 * math.pi * n, 0.0, 0.0, air=air, radial=False)
+        r = rotor_loads(prop, p, rpm * RPM, 0.0, 0.0, air=air, radial=False)
         CT, CQ = r.CT, r.CQ
         pred[label] = {"CT": np.atleast_1d(CT), "CQ": np.atleast_1d(CQ)}
         metrics[label] = {"CT": float(CT), "rel_err_ct": float(CT / 0.072 - 1)}
@@ -372,7 +373,7 @@ def _beaver(param_sets: dict, air: Air) -> CaseResult:
         metrics[label].update(_beaver_matched(prop, p, tunnel, CT0m, ratio_m))
     metrics["measured"] = {"CT0": CT0m, **{f"ratio_{a:g}": r for a, r in ratio_m.items()}}
     first = next(iter(param_sets.values()))
-    h = HoverModel.from_model(prop, first, 2 * math.pi * n, air=tunnel)
+    h = HoverModel.from_model(prop, first, 2 * math.pi * n, air=tunnel)  # (n [Hz]: the paper's, not an rpm)
     pred["hover model"] = {"CT": np.full(inc.size, h.CT(prop.diameter, air=tunnel)) * np.cos(np.radians(true))}
     return CaseResult("beaver", "incidence_deg", inc, {"CT": d[:, 1]}, pred, CITATIONS["beaver"],
                       f"wind-axis CT (T cos a - H sin a), J = 0.896, V = 40 m/s, rho = {BEAVER_RHO} kg/m^3 "

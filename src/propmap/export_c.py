@@ -13,6 +13,7 @@ import hashlib
 import os
 import re
 import textwrap
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -197,11 +198,10 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
     OSError
         The file cannot be written.
     """
-    from .io.atomic import atomic_write
+    from .io.atomic import atomic_write, check_file_name
     from .io.mapfile import sidecar_path
 
-    if isinstance(path, (str, os.PathLike)) and not os.fspath(path):
-        raise ValueError("path is empty: give the header file to write")
+    check_file_name(path)
     text = c_header_text(rotor_map, path, dtype=dtype, name=name, vehicle=vehicle)
     source = rotor_map.dataset.encoding.get("source")  # (the file the map was opened from, if any)
     if source:  # (the header replaced the map it was made from, through a link too: an export audit)
@@ -372,8 +372,7 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         source=_comment(a.get("propmap_source_sha256", "") or "not recorded"), model=_comment(a.get("model", "")),
         uncertainty=unc,
         params_label=_comment((a.get("params_label", "") or a.get("section_model", "")) + _air_words(a)),
-        citation=_comment(a.get("citation", "") or catalogue_source(a.get("propeller", ""),
-                                                                   a.get("propeller_source", "")) or "-"),
+        citation=_comment(a.get("citation", "") or _catalogue_citation(a) or "-"),
         n0=n0, n1=n1, n2=n2,
         rpm0=rm.omega[0] / RPM,
         rpm1=rm.omega[-1] / RPM, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),
@@ -392,6 +391,19 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         end = f"#endif /* {guard} */"
         text = text.replace(end, block.lstrip("\n") + "\n" + end)
     return text
+
+
+def _catalogue_citation(attrs: dict) -> str:
+    """The catalogue's citation of a map's propeller where the map records a catalogue propeller
+    as :func:`propmap.load_propeller` gives it (:func:`propmap.io.catalogue.catalogue_source`; a
+    map built in Python without ``citation=`` wrote "Data: -", an export audit), else ""."""
+    from .io.mapcheck import map_model
+
+    try:
+        recorded = map_model(attrs)[0]
+    except ValueError:  # (a map without that record)
+        return ""
+    return catalogue_source(replace(recorded, source=attrs.get("propeller_source", "")))
 
 
 def _template(rm, prefix: str) -> str:

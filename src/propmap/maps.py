@@ -76,7 +76,7 @@ def default_axes(propeller: Propeller):
     (ndarray, ndarray, ndarray)
         rpm, airspeed, incidence_deg, each strictly increasing.
     """
-    top = DEFAULT_TIP_SPEED / (math.pi * propeller.diameter) * 60
+    top = DEFAULT_TIP_SPEED / propeller.radius / RPM
     top = float(np.round(top, -2))
     return np.geomspace(top / 6, top, 21), np.linspace(0.0, 25.0, 26), np.linspace(0.0, 180.0, 73)
 
@@ -193,7 +193,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         Default: the parameter set's own (``.air``).
     discretization : Discretization
     params_label : str
-        How the parameters were named (``calibrated:apce_8x6``, a file), kept in the map.
+        How the parameters were named (``calibrated:apce_8x6``, a file), kept in the map;
+        default the set's own ``label``.
     citation : str
         The data behind the parameters and geometry, kept in the map.
     chunk_points : int
@@ -386,7 +387,7 @@ def _dataset(result, loads, om, V, b, propeller, params, air, discretization, pa
         "propeller": propeller.name, "propeller_source": propeller.source or "",
         "diameter_m": propeller.diameter, "n_blades": propeller.n_blades,
         "geometry_r_m": propeller.r, "geometry_chord_m": propeller.chord, "geometry_theta_rad": propeller.theta,
-        "section_model": params.section_model, "params_label": params_label,
+        "section_model": params.section_model, "params_label": params_label or getattr(params, "label", ""),
         "params_json": json.dumps(params_to_si(params)),
         "rho_kg_m3": air.rho, "mu_Pa_s": air.mu, "speed_of_sound_m_s": air.speed_of_sound,
         "n_radial": discretization.n_radial, "n_azimuth": discretization.n_azimuth,

@@ -92,16 +92,26 @@ def torque_change_at_constant_thrust(
         i, (lo, hi) = int(np.argmax(missing)), _check_bounds(bounds)
         om, V, b, T = (np.broadcast_to(a, np.shape(loads.thrust)).reshape(-1)[i]
                        for a in (loads.omega, loads.airspeed, loads.incidence, loads.thrust))
+        # (the hover thrust's span over the bounds at that rate, for the cause: a climb's thrust below the least was
+        # said as a descent's above the most, a review)
+        with flapping_warning_held():
+            span = rotor_loads(propeller, params, om, 0.0, 0.0, collective=np.linspace(lo, hi, SPAN_NODES), air=air,
+                               discretization=discretization).thrust
+        why = (f"above the most hover makes there, about {np.max(span):.5g} N" if T > np.max(span) else
+               f"below the least hover makes there, about {np.min(span):.5g} N"
+               + (" (a negative thrust: the windmill brake)" if T < 0 else ""))
         raise TrimError(f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T:.6g} N "
                         f"in hover at omega={om:.6g} rad/s = {om / RPM:.6g} rpm, the hover reference of operating "
                         f"point {_where(i, np.shape(loads.thrust))}(airspeed={V:.6g} m/s, incidence="
-                        f"{math.degrees(b):.6g} deg): a descent's thrust above the most hover makes at that rate, or a "
-                        "negative thrust in the windmill brake")
+                        f"{math.degrees(b):.6g} deg): {why}")
     hover = _hover_nearest(propeller, params, loads, 0.0 if collective is None else collective, hover, air,
                            discretization, bounds, ~missing)
     return loads.CQ - hover.loads.CQ, loads, hover
 
 
+#: collectives across the bounds at which the hover thrust's span is said where none makes the thrust (0.25 deg apart
+#: across the default bounds: the span to about 1e-4 of itself)
+SPAN_NODES = 201
 #: the hover reference of :func:`torque_change_at_constant_thrust` where hover makes the thrust at more than one
 #: collective
 NEAREST_BRANCH = ("the collective nearest the operating point's that makes the thrust in hover (continuous with the "

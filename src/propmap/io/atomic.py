@@ -11,6 +11,7 @@ never a damaged target.
 from __future__ import annotations
 
 import contextlib
+import errno
 import hashlib
 import os
 import signal
@@ -19,8 +20,8 @@ import tempfile
 import threading
 from pathlib import Path
 
-__all__ = ["atomic_path", "atomic_paths", "atomic_write", "file_sha256", "normal_mode", "signals_held",
-           "temp_affixes"]
+__all__ = ["atomic_path", "atomic_paths", "atomic_write", "check_file_name", "file_sha256", "normal_mode",
+           "signals_held", "temp_affixes"]
 
 
 @contextlib.contextmanager
@@ -144,6 +145,23 @@ def temp_affixes(name: str) -> tuple[str, str]:
     return f".{name}.", ".tmp"
 
 
+def check_file_name(path) -> None:
+    """Refuse a ``path`` (str or os.PathLike; others are left to the caller's type check) that
+    is empty or names no file (``""``, ``Path("")``, which is ``"."``, ``".."``): ValueError.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+
+    Raises
+    ------
+    ValueError
+        An empty path, or one that names no file.
+    """
+    if isinstance(path, (str, os.PathLike)) and (not os.fspath(path) or Path(path).name in ("", "..")):
+        raise ValueError(f"path is empty or names no file ({os.fspath(path)!r}): give the file to write")
+
+
 @contextlib.contextmanager
 def atomic_write(path, mode: str = "w", **kwargs):
     """Open a temporary file in ``path``'s folder; on success replace ``path`` with it.
@@ -170,7 +188,7 @@ def atomic_write(path, mode: str = "w", **kwargs):
     OSError
         The folder cannot be created or written, or the rename fails.
     ValueError
-        An empty ``path``.
+        An empty ``path``, or one that names no file.
     """
     if "b" not in mode:
         kwargs.setdefault("encoding", "utf-8")
@@ -230,12 +248,15 @@ def atomic_paths(paths):
     Raises
     ------
     OSError
-        As :func:`atomic_write`, naming the target (not its temporary file).
+        As :func:`atomic_write`, naming the target (not its temporary file); IsADirectoryError
+        for a target that is a folder.
     ValueError
-        An empty path.
+        An empty path, or one that names no file (``"."``, ``".."``).
     """
-    if any(isinstance(p, (str, os.PathLike)) and not os.fspath(p) for p in paths):
-        raise ValueError("path is empty: give the file to write")  # (renamed onto ".": "Device or resource busy")
+    for p in paths:  # (renamed onto "." or a folder: "Device or resource busy" of a hidden temporary name)
+        check_file_name(p)
+        if isinstance(p, (str, os.PathLike)) and os.path.isdir(p):
+            raise IsADirectoryError(errno.EISDIR, "is a folder, not a file", os.fspath(p))
     # a symbolic link to a file is written through: its target replaced, the link kept (the rename replaced the
     # link itself with a regular file and left the target as it was; /dev/stdout too, run as root: an audit)
     paths = [Path(os.path.realpath(p)) if os.path.islink(p) and os.path.exists(p) else Path(p) for p in paths]
@@ -256,7 +277,10 @@ def atomic_paths(paths):
         with _folder_locks({p.parent for p in paths}):
             for tmp, path, perm in zip(tmps, paths, perms):
                 os.chmod(tmp, perm)
-                os.replace(tmp, path)
+                try:
+                    os.replace(tmp, path)
+                except OSError as exc:  # (said of the target, not of its temporary file)
+                    raise type(exc)(exc.errno, exc.strerror, str(path)) from None
     except BaseException:
         for tmp in tmps:
             with contextlib.suppress(FileNotFoundError):

@@ -279,25 +279,28 @@ def near_names(name: str, names, otherwise: str = "; run 'propmap props' for the
     return f"; did you mean {', '.join(found)}?{more}" if found else otherwise
 
 
-@functools.lru_cache(maxsize=256)
-def catalogue_source(name: str, source: str) -> str:
+def catalogue_source(propeller: Propeller) -> str:
     """The citation of a catalogue propeller as :func:`load_propeller` gives it: the entry's
-    citation where ``name`` is a catalogue name and ``source`` (a Propeller's, or a map's
-    ``propeller_source``) is that citation, else "" (a user's geometry file, even under a
-    catalogue name, whose ``source`` says which reader read it, is cited by nothing).
+    citation where ``propeller`` carries a catalogue name, that citation as its ``source`` and
+    the catalogue's blade geometry (``Propeller.same_geometry``), else "" (a user's geometry
+    file, even under a catalogue name, whose ``source`` says which reader read it, and a
+    catalogue propeller changed, are cited by nothing).
 
     Parameters
     ----------
-    name, source : str
+    propeller : Propeller
 
     Returns
     -------
     str
     """
-    entry = catalogue().get(name) if isinstance(name, str) else None
-    return entry.citation if entry is not None and source == entry.citation else ""
+    entry = catalogue().get(propeller.name) if isinstance(propeller.name, str) else None
+    if entry is None or propeller.source != entry.citation:
+        return ""
+    return entry.citation if propeller.same_geometry(load_propeller(entry.name)) else ""
 
 
+@functools.lru_cache(maxsize=256)
 def load_propeller(name: str) -> Propeller:
     """The geometry of a catalogue propeller as a :class:`Propeller`.
 

@@ -39,14 +39,14 @@ def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float,
     import numpy as np
 
     rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
-    n = rpm / 60
+    n, omega = rpm / 60, rpm * RPM
     b = np.radians(incidence_deg)
     # (in still air the incidence means nothing; nor at an airspeed below 1% of the tip speed, where a hovering
     # vehicle's drift turns it anywhere: every real flight log warned of its 179.97 deg, a flight-log audit)
     shape = np.broadcast_shapes(rpm.shape, airspeed.shape, incidence_deg.shape)
-    moving = np.broadcast_to(airspeed, shape) > np.broadcast_to(0.01 * 2 * math.pi * n * prop.radius, shape)
+    moving = np.broadcast_to(airspeed, shape) > np.broadcast_to(0.01 * omega * prop.radius, shape)
     incidences = np.broadcast_to(incidence_deg, shape)[moving]
-    return (float(np.max(np.hypot(2 * math.pi * n * prop.radius + airspeed * np.sin(b), airspeed * np.cos(b)))),
+    return (float(np.max(np.hypot(omega * prop.radius + airspeed * np.sin(b), airspeed * np.cos(b)))),
             float(np.max(airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter))),
             float(np.max(incidences)) if incidences.size else 0.0)
 

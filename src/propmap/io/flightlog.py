@@ -136,8 +136,9 @@ class FlightLog:
         return 1.0 / float(np.median(np.diff(self.t)))
 
 
-#: the most motors a ULog's ``n_motors`` names (PX4's actuator_outputs carry 8 or 16 outputs)
-N_MOTORS_MAX = 16
+#: the most motors ``n_motors`` may name (a plausibility limit: PX4 names Motor1..12 and logs 8 or 16 outputs, and a
+#: vehicle of more rotors meets the reader's own words, which motors no output carries)
+N_MOTORS_MAX = 64
 
 
 def _checked_motor_args(motor_map, n_motors, fmt: str):
@@ -192,11 +193,13 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         ``path`` not a str or os.PathLike.
     ValueError
         ``motor_map`` not two finite numbers with b not 0, ``n_motors`` not an integer in [1,
-        16], or either given for a NeuroBEM log.
+        64], or either given for a NeuroBEM log.
     FlightLogError
         Not a readable regular file (size limit 200 MiB), an unknown format, a malformed
         file, a missing topic or column (named, with those found), fewer than 2 samples,
-        time not strictly increasing or sampled below MIN_RATE_HZ (10 Hz: a time in ms or us),
+        time not strictly increasing or sampled below MIN_RATE_HZ (10 Hz: a time in ms or us) or
+        above MAX_RATE_HZ (10 kHz), a motor acceleration beyond +-1e6 rad/s^2 or unlike the motor
+        speeds' change,
         non-finite values (named as such), motor speeds outside [0, 1e5]
         rad/s, accelerations beyond 2000 m/s^2, rates beyond 200 rad/s or speeds beyond
         500 m/s (likely a unit mistake), a CSV without a header (or a .mat array) that does not

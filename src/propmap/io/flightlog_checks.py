@@ -77,6 +77,11 @@ ANGULAR_ACCELERATION_JUDGED = 1.0  # [rad/s^2]
 #: rpm/s 9.5 and 1e6 times too large were read without a word, their spin-up moments with them: a flight-log audit,
 #: 2026-12-01)
 ROTOR_ACCELERATION_JUDGED = 10.0  # [rad/s^2]
+#: ... over windows of this many samples or more (logs at 50 Hz or faster)
+ROTOR_ACCELERATION_MIN_WINDOW = 3
+#: a window whose motor speeds change by more than this many times the change's 90th percentile is left out of the
+#: motor acceleration's check (a spike of the speeds, warned of: _warn_spikes)
+DERIVATIVE_SPIKE = 5.0
 #: a motor acceleration beyond this is refused [rad/s^2] (0 to 1000 rad/s in 1 ms; the shared segments reach 2.5e4)
 ROTOR_ACCELERATION_MAX = 1e6
 #: a log sampled faster than this is refused [Hz] (a time in another unit; flight_samples takes at most 10 kHz, and a
@@ -104,10 +109,10 @@ def check_log(log: FlightLog, name: str) -> None:
     ------
     FlightLogError
         Fewer than MIN_SAMPLES samples, time not strictly increasing or sampled below
-        MIN_RATE_HZ, a value not finite or beyond its limit (RATE_MAX, ACC_MAX, SPEED_MAX,
-        OMEGA_MAX), a negative motor speed, or frames and units that the attitude, gravity,
-        rates (deg/s, another frame), angular-acceleration and kinematics checks refuse (one
-        line naming the file and sample).
+        MIN_RATE_HZ or above MAX_RATE_HZ, a value not finite or beyond its limit (RATE_MAX,
+        ACC_MAX, SPEED_MAX, OMEGA_MAX, ROTOR_ACCELERATION_MAX), a negative motor speed, or
+        frames and units that the attitude, gravity, rates (deg/s, another frame), angular- and
+        motor-acceleration and kinematics checks refuse (one line naming the file and sample).
 
     Warns
     -----
@@ -132,7 +137,8 @@ def check_log(log: FlightLog, name: str) -> None:
                              "angular acceleration is differentiated from the rates)")
     if log.rate_hz > (1 + 1e-3) * MAX_RATE_HZ:
         raise FlightLogError(f"{name}: the time steps by {1 / log.rate_hz:.6g} s in the median ({log.rate_hz:.4g} Hz), "
-                             f"faster than the {MAX_RATE_HZ:g} Hz a flight log is read at: is the time in seconds?")
+                             f"faster than the {MAX_RATE_HZ:g} Hz propmap samples a flight log at, at most: is the "
+                             "time in seconds?")
     # (the attitude first: a ULog's velocity is turned into body axes with it, and a NaN quaternion was said as a NaN
     # velocity, a file audit, 2026-12-01)
     checks = [("attitude", log.attitude, math.inf, ""),
@@ -241,7 +247,8 @@ def _check_angular_acceleration(log: FlightLog, name: str) -> None:
     without a word, the measured moments 57 times too large: an input fuzzing audit, 2026-11-27; the
     NeuroBEM segments 0.97-0.99, a review's consistent logs at 20-50 Hz 0.98-0.997 and its
     noisy-gyro one 0.90 and 0.97); and a logged motor acceleration (NeuroBEM's dmot columns, the
-    spin-up moment's) against the motor speeds' change, judged from ROTOR_ACCELERATION_JUDGED."""
+    spin-up moment's) against the motor speeds' change, judged from ROTOR_ACCELERATION_JUDGED over
+    windows of ROTOR_ACCELERATION_MIN_WINDOW samples or more, unless all zeros (not logged)."""
     if log.angular_acceleration is not None:
         b1 = _derivative_ratio(log, log.angular_velocity, log.angular_acceleration, ANGULAR_ACCELERATION_JUDGED)
         if b1 is not None:
@@ -253,10 +260,16 @@ def _check_angular_acceleration(log: FlightLog, name: str) -> None:
                                  f"(within {ANGULAR_ACCELERATION_RATIO[0]:g}-{ANGULAR_ACCELERATION_RATIO[1]:g} "
                                  f"expected): {why} It is read in rad/s^2, body axes (the measured moment is I dw/dt + "
                                  "w x I w)")
-    if log.rotor_acceleration is not None:
-        b1 = _derivative_ratio(log, log.rotor_omega, log.rotor_acceleration, ROTOR_ACCELERATION_JUDGED)
+    # (all zeros: not logged, as a ULog's, whose spin-up moment is none either; below ROTOR_ACCELERATION_MIN_WINDOW
+    # samples a window's dmot is a point sample of a noisy derivative: the shared slow segment decimated to 20 Hz was
+    # refused at every phase, a review)
+    logged = log.rotor_acceleration is not None and bool(np.any(log.rotor_acceleration))
+    if logged and round(ANGULAR_ACCELERATION_WINDOW * log.rate_hz) >= ROTOR_ACCELERATION_MIN_WINDOW:
+        b1 = _derivative_ratio(log, log.rotor_omega, log.rotor_acceleration, ROTOR_ACCELERATION_JUDGED, spikes=True)
         if b1 is not None:
-            why = "in rpm/s (the ratio near 9.55)?" if 6 <= b1 <= 14 else _odd_ratio(b1, "negated?")
+            why = ("in rpm/s (the ratio near 9.55)?" if 6 <= b1 <= 14 else
+                   "are the motor speeds in rpm (the ratio near 1/9.55)?" if 1 / 14 <= b1 <= 1 / 6 else
+                   _odd_ratio(b1, "negated?"))
             raise FlightLogError(f"{name}: the logged motor acceleration is {b1:.3g} times the logged motor speeds' "
                                  f"change (within {ANGULAR_ACCELERATION_RATIO[0]:g}-{ANGULAR_ACCELERATION_RATIO[1]:g} "
                                  f"expected): {why} It is read in rad/s^2 (the spin-up moment's)")
@@ -269,20 +282,26 @@ def _odd_ratio(b1: float, against: str = "another frame or sign?") -> str:
     return "zeros or another quantity?" if abs(b1) < lo else against if b1 < 0 else "another unit or column?"
 
 
-def _derivative_ratio(log: FlightLog, values: np.ndarray, logged: np.ndarray, judged: float) -> float | None:
+def _derivative_ratio(log: FlightLog, values: np.ndarray, logged: np.ndarray, judged: float,
+                      spikes: bool = False) -> float | None:
     """None where the logged derivative ``logged`` of ``values`` (rows at the log's times) is
     plausible, else the least-squares ratio of it on the values' change over
     ANGULAR_ACCELERATION_WINDOW s (the logged one's trapezoid mean over the same windows): a
     derivative is implausible where the two least-squares ratios (of either on the other, which
     noise in one or the other pulls apart) both lie outside ANGULAR_ACCELERATION_RATIO, or they
-    correlate negatively, where the values change by ``judged`` rms or more."""
+    correlate negatively, where the values change by ``judged`` rms or more. With ``spikes``, the
+    windows whose change exceeds DERIVATIVE_SPIKE times its 90th percentile are left out (a motor
+    speed's spike, warned of as such, took the ratio of a consistent log to 0.0002)."""
     k = max(1, int(round(ANGULAR_ACCELERATION_WINDOW * log.rate_hz)))
     if log.n <= k:
         return None
     d = (values[k:] - values[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
+    means = _window_means(log.t, logged, k)
+    if spikes:
+        calm = np.abs(d) <= DERIVATIVE_SPIKE * np.percentile(np.abs(d), 90, axis=0)
+        d, means = np.where(calm, d, 0.0), np.where(calm, means, 0.0)
     if np.sqrt(np.mean(d**2)) < judged:
         return None
-    means = _window_means(log.t, logged, k)
     ld, dd, ll = float(np.sum(means * d)), float(np.sum(d * d)), float(np.sum(means * means))
     lo, hi = ANGULAR_ACCELERATION_RATIO
     b1 = ld / dd

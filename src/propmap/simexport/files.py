@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import re
 from pathlib import Path
 
@@ -310,8 +309,7 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     Raises
     ------
     ValueError
-        ``vehicle`` with another target, one RotorPy cannot represent, or one with a rotor
-        whose propeller's radius is not the export's ``rotor_radius``; an empty ``path``, or
+        ``vehicle`` with another target, or one RotorPy cannot represent; an empty ``path``, or
         one named ``*.report.json`` (an export's report: it would replace another export's).
     TypeError
         ``res`` not a :class:`SimExport`; ``vehicle`` given and not a :class:`propmap.Vehicle`;
@@ -323,8 +321,9 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
         check_vehicle(vehicle)
     if not isinstance(res, SimExport):
         raise TypeError(f"res must be a SimExport (propmap.export_sim), got {type(res).__name__}")
-    if isinstance(path, (str, os.PathLike)) and not os.fspath(path):
-        raise ValueError("path is empty: give the coefficient file to write")
+    from ..io.atomic import check_file_name
+
+    check_file_name(path)
     path = as_path(path)
     if path.name.lower().endswith(".report.json"):
         raise ValueError(f"path: {path.name}: a name ending in .report.json is an export's report (written beside its "
@@ -337,12 +336,6 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
         if res.target != "rotorpy":
             raise ValueError(f"vehicle: a vehicle block is written for the rotorpy target only, not {res.target}")
         check_rotorpy_vehicle(vehicle)
-        radius = float(res.coefficients["rotor_radius"])
-        for k, r in enumerate(vehicle.rotors):  # (the coefficients are one propeller's: the API took any vehicle)
-            if not math.isclose(r.propeller.radius, radius, rel_tol=1e-6):
-                raise ValueError(f"vehicle: rotor {k + 1} carries {r.propeller.name} (radius {r.propeller.radius:.4g} "
-                                 f"m), not the exported {res.meta.get('propeller')} (radius {radius:.4g} m): "
-                                 "quad_params would give its rotors another propeller's coefficients")
     if res.target == "rotorpy":
         text = _rotorpy_text(res, head, vehicle, vehicle_label, airframe_label)
     elif res.target in ("gazebo-classic", "gz-sim"):

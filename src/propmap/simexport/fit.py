@@ -490,7 +490,7 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
     label = params_label or params.label or params.section_model  # (the set's own label: the file's head said
     # "(cambered)" of calibrated:apce_8x6 where the API was given no params_label, an export audit)
     meta = {"propeller": propeller.name, "params": label,
-            **({"citation": cited} if (cited := catalogue_source(propeller.name, propeller.source)) else {}),
+            **({"citation": cited} if (cited := catalogue_source(propeller)) else {}),
             "model_uncertainty": {**model_uncertainty(params_label or getattr(params, "label", "")),
                                   "edgewise_trend": _edgewise_trend(propeller, params, air, envelope)},
             "section_model": params.section_model, "propmap_version": __version__,
