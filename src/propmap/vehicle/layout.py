@@ -98,7 +98,7 @@ def check_inertia(m: np.ndarray, what: str) -> None:
     others)."""
     shown = "[" + ", ".join("[" + ", ".join(f"{float(x):.4g}" for x in row) + "]" for row in m) + "]"
     if np.any(np.abs(m) > INERTIA_MAX):
-        raise ValueError(f"{what} must have elements within +-{INERTIA_MAX:g} kg m^2, got {shown}")
+        raise ValueError(f"{what} must have finite elements within +-{INERTIA_MAX:g} kg m^2, got {shown}")
     if not np.allclose(m, m.T, rtol=1e-9, atol=1e-15):
         raise ValueError(f"{what} must be symmetric, got {shown}")
     p = np.linalg.eigvalsh(m)
