@@ -78,6 +78,10 @@ def test_an_unwritable_folder_is_named_not_the_temporary_file(tmp_path, monkeypa
     def refuse(*args, **kwargs):
         raise OSError(errno.EROFS, "Read-only file system", str(tmp_path / ".x.h.abcdefgh.tmp"))
 
+    with pytest.raises(ValueError, match="names no file"):  # (a trailing separator: "new/" wrote a file "new")
+        with atomic_write(f"{tmp_path}/new/") as fh:
+            fh.write("a")
+    assert not (tmp_path / "new").exists()
     (tmp_path / "folder").mkdir()
     with pytest.raises(IsADirectoryError, match="is a folder, not a file"):  # (a rename onto it named the temp file)
         with atomic_write(tmp_path / "folder") as fh:
@@ -267,13 +271,20 @@ def test_logged_motor_accelerations_are_checked_against_the_motor_speeds(segment
     from propmap.io.flightlog_checks import FlightLogError, check_log
 
     check_log(segment, "seg")  # (the log as measured passes)
-    for factor, match in ((30 / math.pi, r"motor acceleration is 9.4\d times .* in rpm/s"),
+    for factor, match in ((30 / math.pi, r"motor 1's logged acceleration is 9.4\d times .* in rpm/s"),
                           (1e6, r"rotor_acceleration .* beyond \+-1e\+06 rad/s\^2"),
                           (1e-3, "zeros or another quantity"), (-1.0, "negated")):
         with pytest.raises(FlightLogError, match=match):
             check_log(dataclasses.replace(segment, rotor_acceleration=segment.rotor_acceleration * factor), "seg")
     with pytest.raises(FlightLogError, match=r"are the motor speeds in rpm \(the ratio near 1/9.55\)"):
         check_log(dataclasses.replace(segment, rotor_omega=segment.rotor_omega / RPM), "seg")
+    one = segment.rotor_acceleration.copy()  # (one motor's column in rpm/s among three good ones passed, pooled)
+    one[:, 2] *= 30 / math.pi
+    with pytest.raises(FlightLogError, match=r"motor 3's logged acceleration is 9.\d* times"):
+        check_log(dataclasses.replace(segment, rotor_acceleration=one), "seg")
+    swapped = segment.rotor_acceleration[:, [1, 0, 3, 2]]  # (each motor's against another's change)
+    with pytest.raises(FlightLogError, match=r"motor \d's logged acceleration .* (another motor's|zeros)"):
+        check_log(dataclasses.replace(segment, rotor_acceleration=swapped), "seg")
     # all zeros: not logged (a ULog's none; the spin-up moment none either way), and passed
     check_log(dataclasses.replace(segment, rotor_acceleration=0.0 * segment.rotor_acceleration), "seg")
     # decimated to 20 Hz (one sample a 50 ms window: a noisy derivative's point samples, refused at every phase by the
@@ -310,12 +321,15 @@ def _examples(tmp_path) -> str:
     return (examples / "neurobem_quadrotor.toml").read_text()
 
 
-def test_an_inertia_no_rigid_body_has_is_refused_or_warned_of(tmp_path):
+def test_an_inertia_no_rigid_body_has_is_refused_or_warned_of(tmp_path, monkeypatch):
     """The Python Vehicle took a zero inertia (measured moments silently 0), a negative one (their sign flipped) and
     an unsymmetric one; the file reader and the Python Vehicle took principal moments that break the triangle
     inequality without a word (warned of since: published simulator values break it, RotorS' firefly by 21%)."""
     import dataclasses
 
+    from propmap.vehicle import layout
+
+    monkeypatch.setattr(layout, "_TRIANGLE_WARNED", set())  # (warned once per tensor and process)
     veh = pm.read_vehicle("neurobem_quadrotor")  # (0.0025 + 0.0021 >= 0.0043: passes, as the example quadrotor)
     pm.read_vehicle("quadrotor")
     for inertia, match in (([0.0, 0.0, 0.0], "positive definite"), ([-0.0025, -0.0021, -0.0043], "positive definite"),
@@ -328,14 +342,15 @@ def test_an_inertia_no_rigid_body_has_is_refused_or_warned_of(tmp_path):
     text = _examples(tmp_path)
     assert "inertia = [0.0025, 0.0021, 0.0043]" in text
     (tmp_path / "v.toml").write_text(text.replace("inertia = [0.0025, 0.0021, 0.0043]",
-                                                  "inertia = [0.001, 0.001, 0.0043]"))
+                                                  "inertia = [0.001, 0.0012, 0.0043]"))
     import warnings
 
-    with warnings.catch_warnings(record=True) as caught:
+    with warnings.catch_warnings(record=True) as caught:  # (once, naming the file: then a fit's copies say nothing)
         warnings.simplefilter("always")
-        pm.read_vehicle(tmp_path / "v.toml")
+        shifted = layout.shift_centre_of_mass(pm.read_vehicle(tmp_path / "v.toml"), [0.001, 0.0, 0.0])
     said = [str(w.message) for w in caught if "triangle" in str(w.message)]
     assert len(said) == 1 and said[0].startswith(f"{tmp_path / 'v.toml'}: inertia: its principal moments"), said
+    assert shifted.inertia[2, 2] == 0.0043
 
 
 def test_a_vehicle_whose_params_name_itself_is_refused_so(tmp_path):

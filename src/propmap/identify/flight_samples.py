@@ -13,13 +13,12 @@ import numpy as np
 from ..core._numbers import checked
 from ..core.air import G0
 from ..io.flightlog import FlightLog
+from ..io.flightlog_checks import OMEGA_STOPPED
 from ..vehicle import Vehicle
 from ._checks import boolean_mask, first_length, float_array
 
 __all__ = ["OMEGA_STOPPED", "GROUND_FRACTION", "GROUND_SPEED", "GROUND_RATE", "FlightSamples", "flight_samples"]
 
-#: rotation rates below this are taken as a stopped rotor and the sample is left out [rad/s]
-OMEGA_STOPPED = 1.0
 #: a motor whose median speed over a log lies beyond this factor of the median of the motors that turn the same
 #: propeller is warned of (the four NeuroBEM segments: 0.976-1.021)
 MOTOR_SPREAD = 1.4

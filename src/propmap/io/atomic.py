@@ -147,7 +147,8 @@ def temp_affixes(name: str) -> tuple[str, str]:
 
 def check_file_name(path) -> None:
     """Refuse a ``path`` (str or os.PathLike; others are left to the caller's type check) that
-    is empty or names no file (``""``, ``Path("")``, which is ``"."``, ``".."``): ValueError.
+    is empty or names no file (``""``, ``Path("")``, which is ``"."``, ``".."``, a trailing
+    separator): ValueError.
 
     Parameters
     ----------
@@ -158,8 +159,10 @@ def check_file_name(path) -> None:
     ValueError
         An empty path, or one that names no file.
     """
-    if isinstance(path, (str, os.PathLike)) and (not os.fspath(path) or Path(path).name in ("", "..")):
-        raise ValueError(f"path is empty or names no file ({os.fspath(path)!r}): give the file to write")
+    text = os.fspath(path) if isinstance(path, (str, os.PathLike)) else None
+    # (a trailing separator names a folder: "new/" wrote a file called "new", a review)
+    if text is not None and (not text or Path(text).name in ("", "..") or text.endswith((os.sep, os.sep + "."))):
+        raise ValueError(f"path is empty or names no file ({text!r}): give the file to write")
 
 
 @contextlib.contextmanager

@@ -79,9 +79,9 @@ ANGULAR_ACCELERATION_JUDGED = 1.0  # [rad/s^2]
 ROTOR_ACCELERATION_JUDGED = 10.0  # [rad/s^2]
 #: ... over windows of this many samples or more (logs at 50 Hz or faster)
 ROTOR_ACCELERATION_MIN_WINDOW = 3
-#: a window whose motor speeds change by more than this many times the change's 90th percentile is left out of the
-#: motor acceleration's check (a spike of the speeds, warned of: _warn_spikes)
-DERIVATIVE_SPIKE = 5.0
+#: a motor speed below this is a stopped (or unreported) rotor [rad/s]: left out of the motor acceleration's check
+#: here, and of a flight fit's samples (identify.flight_samples)
+OMEGA_STOPPED = 1.0
 #: a motor acceleration beyond this is refused [rad/s^2] (0 to 1000 rad/s in 1 ms; the shared segments reach 2.5e4)
 ROTOR_ACCELERATION_MAX = 1e6
 #: a log sampled faster than this is refused [Hz] (a time in another unit; flight_samples takes at most 10 kHz, and a
@@ -179,20 +179,26 @@ def _warn_spikes(log: FlightLog, name: str) -> None:
     speed SPIKE_OMEGA of it and 100 rad/s beyond (telemetry glitches: two samples at 300 m/s^2
     took a log's Fz rms from 0.27 to 2.6 N without a word, a flight-log audit, 2026-11-27). They
     are read as logged: the warning says how many and where."""
-    from scipy.ndimage import median_filter
-
     if log.n < SPIKE_WINDOW or log.rate_hz < SPIKE_RATE_HZ:  # (slower, a sample's neighbours are too far away in time
         return  # to tell a glitch from the motion: a consistent agile log at 20 Hz had one, a test's)
-    for what, a, far in (("accelerometer", log.specific_force, lambda d, m: d > SPIKE_ACC),
-                         ("motor speed", log.rotor_omega,
-                          lambda d, m: (d > SPIKE_OMEGA * np.abs(m)) & (d > 100.0))):
-        med = median_filter(a, size=(SPIKE_WINDOW, 1), mode="nearest")
-        bad = np.any(far(np.abs(a - med), med), axis=1)
+    for what, bad in (("accelerometer", np.any(_spikes(log.specific_force, "acc"), axis=1)),
+                      ("motor speed", np.any(_spikes(log.rotor_omega, "omega"), axis=1))):
         if bad.any():
             i = int(np.argmax(bad))
             warnings.warn(f"{name}: {int(bad.sum())} sample(s) of the {what} lie far from their neighbours (spikes; "
                           f"the first at sample {i + 1}, t = {log.t[i]:.6g} s): they are read as logged and weigh in "
                           "the fit and the rms; cut them out if they are glitches", UserWarning, stacklevel=4)
+
+
+def _spikes(a: np.ndarray, kind: str) -> np.ndarray:
+    """The isolated samples of ``a`` (N, k) far from the median of the SPIKE_WINDOW samples around
+    them: SPIKE_ACC beyond it for an accelerometer (``kind`` "acc"), SPIKE_OMEGA of it and 100 rad/s
+    beyond for a motor speed ("omega"); boolean, shaped like ``a``."""
+    from scipy.ndimage import median_filter
+
+    med = median_filter(a, size=(SPIKE_WINDOW, 1), mode="nearest")
+    d = np.abs(a - med)
+    return d > SPIKE_ACC if kind == "acc" else (d > SPIKE_OMEGA * np.abs(med)) & (d > 100.0)
 
 
 def _check_frames(log: FlightLog, name: str) -> None:
@@ -247,8 +253,9 @@ def _check_angular_acceleration(log: FlightLog, name: str) -> None:
     without a word, the measured moments 57 times too large: an input fuzzing audit, 2026-11-27; the
     NeuroBEM segments 0.97-0.99, a review's consistent logs at 20-50 Hz 0.98-0.997 and its
     noisy-gyro one 0.90 and 0.97); and a logged motor acceleration (NeuroBEM's dmot columns, the
-    spin-up moment's) against the motor speeds' change, judged from ROTOR_ACCELERATION_JUDGED over
-    windows of ROTOR_ACCELERATION_MIN_WINDOW samples or more, unless all zeros (not logged)."""
+    spin-up moment's) against the motor speeds' change, each motor on its own, judged from
+    ROTOR_ACCELERATION_JUDGED over windows of ROTOR_ACCELERATION_MIN_WINDOW samples or more
+    (the speeds' spikes left out), unless all zeros (not logged)."""
     if log.angular_acceleration is not None:
         b1 = _derivative_ratio(log, log.angular_velocity, log.angular_acceleration, ANGULAR_ACCELERATION_JUDGED)
         if b1 is not None:
@@ -262,17 +269,37 @@ def _check_angular_acceleration(log: FlightLog, name: str) -> None:
                                  "w x I w)")
     # (all zeros: not logged, as a ULog's, whose spin-up moment is none either; below ROTOR_ACCELERATION_MIN_WINDOW
     # samples a window's dmot is a point sample of a noisy derivative: the shared slow segment decimated to 20 Hz was
-    # refused at every phase, a review)
-    logged = log.rotor_acceleration is not None and bool(np.any(log.rotor_acceleration))
-    if logged and round(ANGULAR_ACCELERATION_WINDOW * log.rate_hz) >= ROTOR_ACCELERATION_MIN_WINDOW:
-        b1 = _derivative_ratio(log, log.rotor_omega, log.rotor_acceleration, ROTOR_ACCELERATION_JUDGED, spikes=True)
+    # refused at every phase, a review; each motor on its own: one motor's column in rpm/s passed among three good
+    # ones, a review)
+    acc = log.rotor_acceleration
+    if acc is None or not np.any(acc) or _window_samples(log.rate_hz) < ROTOR_ACCELERATION_MIN_WINDOW:
+        return
+    calm = ~_spikes(log.rotor_omega, "omega")  # (a speed's spike, warned of, is no change of speed)
+    # (a sample whose motors' accelerations are all exactly 0 is one where they were not logged, as a whole column of
+    # zeros: a log's prefix on the ground, written without them, made every motor's ratio 0 at its step to flight)
+    calm &= ~np.all(acc == 0, axis=1)[:, None]
+    # (a motor logged stopped, at 0 among flight speeds: a telemetry dropout, which the flight fit leaves out; its steps
+    # are no change of speed)
+    calm &= log.rotor_omega >= OMEGA_STOPPED
+    for m in range(acc.shape[1]):
+        if not np.any(acc[:, m]):  # (a motor's column of zeros: not logged)
+            continue
+        b1 = _derivative_ratio(log, log.rotor_omega[:, m:m + 1], acc[:, m:m + 1], ROTOR_ACCELERATION_JUDGED,
+                               calm[:, m:m + 1])
         if b1 is not None:
             why = ("in rpm/s (the ratio near 9.55)?" if 6 <= b1 <= 14 else
                    "are the motor speeds in rpm (the ratio near 1/9.55)?" if 1 / 14 <= b1 <= 1 / 6 else
-                   _odd_ratio(b1, "negated?"))
-            raise FlightLogError(f"{name}: the logged motor acceleration is {b1:.3g} times the logged motor speeds' "
+                   _odd_ratio(b1, "negated, or another motor's?"))
+            raise FlightLogError(f"{name}: motor {m + 1}'s logged acceleration is {b1:.3g} times its logged speed's "
                                  f"change (within {ANGULAR_ACCELERATION_RATIO[0]:g}-{ANGULAR_ACCELERATION_RATIO[1]:g} "
                                  f"expected): {why} It is read in rad/s^2 (the spin-up moment's)")
+
+
+def _window_samples(rate_hz: float) -> int:
+    """The samples of an ANGULAR_ACCELERATION_WINDOW at ``rate_hz``, rounded half up (a 50 Hz log's
+    49.99999999999996 Hz of rounded steps made 2.5 samples 2, and its motor accelerations unjudged:
+    a review), at least 1."""
+    return max(1, int(math.floor(ANGULAR_ACCELERATION_WINDOW * rate_hz + 0.5 + 1e-6)))
 
 
 def _odd_ratio(b1: float, against: str = "another frame or sign?") -> str:
@@ -283,23 +310,24 @@ def _odd_ratio(b1: float, against: str = "another frame or sign?") -> str:
 
 
 def _derivative_ratio(log: FlightLog, values: np.ndarray, logged: np.ndarray, judged: float,
-                      spikes: bool = False) -> float | None:
+                      calm: np.ndarray | None = None) -> float | None:
     """None where the logged derivative ``logged`` of ``values`` (rows at the log's times) is
     plausible, else the least-squares ratio of it on the values' change over
     ANGULAR_ACCELERATION_WINDOW s (the logged one's trapezoid mean over the same windows): a
     derivative is implausible where the two least-squares ratios (of either on the other, which
     noise in one or the other pulls apart) both lie outside ANGULAR_ACCELERATION_RATIO, or they
-    correlate negatively, where the values change by ``judged`` rms or more. With ``spikes``, the
-    windows whose change exceeds DERIVATIVE_SPIKE times its 90th percentile are left out (a motor
-    speed's spike, warned of as such, took the ratio of a consistent log to 0.0002)."""
-    k = max(1, int(round(ANGULAR_ACCELERATION_WINDOW * log.rate_hz)))
+    correlate negatively, where the values change by ``judged`` rms or more. With ``calm`` (shaped
+    like ``values``), the windows holding a sample not calm are left out (a motor speed's spike,
+    warned of as such, took the ratio of a consistent log to 0.0002)."""
+    k = _window_samples(log.rate_hz)
     if log.n <= k:
         return None
     d = (values[k:] - values[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
     means = _window_means(log.t, logged, k)
-    if spikes:
-        calm = np.abs(d) <= DERIVATIVE_SPIKE * np.percentile(np.abs(d), 90, axis=0)
-        d, means = np.where(calm, d, 0.0), np.where(calm, means, 0.0)
+    if calm is not None:  # (the windows holding a sample not calm left out)
+        inside = np.concatenate([np.zeros((1, calm.shape[1]), int), np.cumsum(~calm, axis=0)])
+        keep = inside[k + 1:] - inside[:-k - 1] == 0
+        d, means = np.where(keep, d, 0.0), np.where(keep, means, 0.0)
     if np.sqrt(np.mean(d**2)) < judged:
         return None
     ld, dd, ll = float(np.sum(means * d)), float(np.sum(d * d)), float(np.sum(means * means))

@@ -65,7 +65,6 @@ import math
 import numbers
 import os
 import re
-import warnings
 from pathlib import Path
 
 import numpy as np
@@ -362,7 +361,9 @@ def read_vehicle(path) -> Vehicle:
         As :func:`propmap.io.geometry_files.read_uiuc_geometry` for a rotor's geometry file; a
         rotor more than ARM_RADII_MAX of its radii from the centre of mass (positions in mm?),
         two rotors at one position, an inertia whose largest principal moment lies outside
-        INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?), four or more rotors of
+        INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?) or whose principal moments
+        break the triangle inequality (once per tensor: :func:`propmap.vehicle.layout.check_inertia`),
+        four or more rotors of
         parallel axes (within 10 deg) all spinning one way; rotors pointing down (within 45
         deg of -z) beside rotors pointing up; a rotor inertia above mass x R^2 (g cm^2?).
     """
@@ -408,11 +409,9 @@ def _read_vehicle(path) -> tuple[Vehicle, dict, Path, tuple | None]:
                                "axis in the body frame x forward, y left, z up, so this vehicle cannot lift itself; a "
                                "z-down frame's (FRD, PX4's) axis [0, 0, -1] is [0, 0, 1] here")
     _warn_implausible(name, rotors, mass, inertia, cg, kappa)
-    with warnings.catch_warnings():  # (the inertia's triangle was warned of above, naming the file)
-        warnings.filterwarnings("ignore", message=".*break the triangle inequality", category=UserWarning)
-        veh = Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia,
-                      body_drag=body, centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)
-    return veh, data, path, own
+    # (the inertia's triangle, if broken, was warned of above naming the file, and is not again)
+    return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
+                   centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text), data, path, own
 
 
 def _vehicle_table(given, path: Path) -> dict:

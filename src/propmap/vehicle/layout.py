@@ -93,7 +93,7 @@ def check_inertia(m: np.ndarray, what: str) -> None:
     """Refuse an inertia tensor ``m`` (3 x 3, finite) with elements beyond +-INERTIA_MAX, not
     symmetric or not positive definite (ValueError naming ``what``: a zero tensor made the measured
     moments silently 0 and a negative one flipped their sign, a flight-log audit, 2026-12-01), and
-    warn where its principal moments break the triangle inequality by more than
+    warn, once per tensor, where its principal moments break the triangle inequality by more than
     INERTIA_TRIANGLE_SLACK (no rigid body's: an element mistyped, or in another unit than the
     others)."""
     shown = "[" + ", ".join("[" + ", ".join(f"{float(x):.4g}" for x in row) + "]" for row in m) + "]"
@@ -104,13 +104,26 @@ def check_inertia(m: np.ndarray, what: str) -> None:
     p = np.linalg.eigvalsh(m)
     if p[0] <= 0:
         raise ValueError(f"{what} must be positive definite (all principal moments > 0), got {shown}")
-    if p[2] > (1.0 + INERTIA_TRIANGLE_SLACK) * (p[0] + p[1]):
+    if p[2] > (1.0 + INERTIA_TRIANGLE_SLACK) * (p[0] + p[1]) and _first_warning(m):
         import warnings
 
         warnings.warn(f"{what}: its principal moments {p[0]:.4g}, {p[1]:.4g}, {p[2]:.4g} kg m^2 break the triangle "
                       f"inequality every rigid body's satisfy (the largest is {p[2] / (p[0] + p[1]):.3g} times the sum "
                       "of the other two): one element mistyped, or in another unit than the others?", UserWarning,
                       stacklevel=4)
+
+
+#: the inertia tensors already warned of (as bytes): once each, whoever builds a Vehicle with one (a file's reader, then
+#: the fits' copies of the vehicle, warned twice through the API: a review)
+_TRIANGLE_WARNED: set = set()
+
+
+def _first_warning(m: np.ndarray) -> bool:
+    """Whether the inertia tensor ``m`` is warned of for the first time (and mark it so)."""
+    key = np.ascontiguousarray(m, float).tobytes()
+    first = key not in _TRIANGLE_WARNED
+    _TRIANGLE_WARNED.add(key)
+    return first
 
 
 def _is_number(x) -> bool:
