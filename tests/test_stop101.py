@@ -467,3 +467,27 @@ def test_a_mu_column_is_told_how_it_converts(tmp_path):
     (tmp_path / "m.csv").write_text("rpm,mu,incidence_deg,thrust,drag,torque\n" + rows)
     with pytest.raises(DataError, match=r"for mu = V sin\(incidence\) / \(Omega R\), V = pi mu n D / sin\(incidence\)"):
         read_loads(tmp_path / "m.csv")
+
+
+def test_a_fit_along_directions_reports_the_directions_jacobians_singular_values(monkeypatch, tmp_path):
+    """The report's 'free directions' Jacobian singular values' were those of J_c diag(max(|c|, 0.1)), c the
+    directions' coefficients in prior standard deviations, where a relative change means nothing: apce_8x6's static
+    run printed 0.521, 0.226, 0.0733 where J_c's are 1.181, 0.500, 0.152 (a report audit)."""
+    import json
+
+    from propmap.cli.main import main
+    from propmap.identify import fit
+
+    seen = {}
+    report = fit._directions_report
+
+    def spy(result, options):
+        seen["jac_c"] = np.array(result.extra["directions"]["jac_c"], float)
+        return report(result, options)
+
+    monkeypatch.setattr(fit, "_directions_report", spy)
+    static = Path(pm.__file__).parent / "data" / "uiuc_v1" / "apce_8x6_static_2797rd.txt"
+    assert main(["fit", "loads", str(static), "--prop", "apce_8x6", "--out", str(tmp_path / "s.toml")]) == 0
+    sv = json.loads((tmp_path / "s.report.json").read_text())["identifiability"]["singular_values"]
+    np.testing.assert_allclose(sv, np.linalg.svd(seen["jac_c"], compute_uv=False), rtol=1e-9)
+    assert sv[0] == pytest.approx(1.181, abs=2e-3) and sv[-1] == pytest.approx(0.152, abs=2e-3)  # regression values

@@ -389,7 +389,10 @@ def _directions_report(result: FitResult, options: FitOptions) -> FitResult:
                   f"{sd:.3g} prior standard deviations): fewer directions (--directions) would do"
                   for n, sd in zip(dnames, own.std_error) if n in weak)
     ci = np.column_stack([result.x - t * std, result.x + t * std])
-    idf = _cut_at_bounds(Identifiability(result.names, std, ci, corr, own.singular_values, (), warns,
+    # (the singular values of J_c itself: c is in prior standard deviations, a unit scale; _identifiability's
+    # relative scaling by max(|c|, 0.1) made them depend on where the coefficients landed, a report audit)
+    sv = np.linalg.svd(np.asarray(Jc, float), compute_uv=False)
+    idf = _cut_at_bounds(Identifiability(result.names, std, ci, corr, sv, (), warns,
                                          std_error_data=None, effective_parameters=eff,
                                          warning_kinds=tuple(("weak_direction", (n,)) for n in weak)),
                          *_bounds(result.names, options))
