@@ -491,3 +491,42 @@ def test_a_fit_along_directions_reports_the_directions_jacobians_singular_values
     sv = json.loads((tmp_path / "s.report.json").read_text())["identifiability"]["singular_values"]
     np.testing.assert_allclose(sv, np.linalg.svd(seen["jac_c"], compute_uv=False), rtol=1e-9)
     assert sv[0] == pytest.approx(1.181, abs=2e-3) and sv[-1] == pytest.approx(0.152, abs=2e-3)  # regression values
+
+
+# ---- the core public API (a fourth audit's: docstrings against behaviour) -------------------------------------------
+def test_core_objects_refuse_or_compute_what_their_docstrings_say(shared_data, cal):
+    """Each of these failed as shown before (an API audit): a float32 replace kept the calibrated label; an array
+    inflow built a set that rotor_loads then failed on; == of two RotorWrench raised; CP was NaN at 1e-120 rad/s
+    where CT and CQ were finite; a huge radius passed the extrapolation check through NaN; source=None was stored;
+    load_propeller(["x"]) met "unhashable type"; a 5,000-character name an OSError; PRESETS could be emptied; a
+    PE0 file's NaN diameter_in met an IndexError and an array n_blades NumPy's ambiguity."""
+    from propmap.io.catalogue import resolve_propeller
+    from propmap.io.geometry_files import GeometryFileError
+
+    assert cal.replace(cl_max=np.float32(cal.cl_max)).label == "modified calibrated:apce_8x6"
+    assert cal.replace(cl_max=cal.cl_max).label == "calibrated:apce_8x6"
+    with pytest.raises(ValueError, match="inflow must be one of"):
+        cal.replace(inflow=np.array(["drees"]))
+    prop = pm.load_propeller("apce_8x6")
+    w = pm.rotor_wrench(prop, cal, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0)
+    assert (w == w) and not (w == pm.rotor_wrench(prop, cal, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0))  # identity
+    r = pm.rotor_loads(prop, cal, np.array([1e-120, 1e-105, 800.0]), 0.0, 0.0)
+    np.testing.assert_allclose(r.CP, 2 * np.pi * r.CQ, rtol=1e-15)
+    assert np.all(np.isfinite(r.CP))
+    with pytest.raises(ValueError, match="extrapolates"):
+        pm.Propeller("x", 1e300, 2, [0.02, 0.05, 0.1], [0.02, 0.02, 0.01], [0.5, 0.3, 0.2])
+    with pytest.raises(ValueError, match="source must be a string"):
+        pm.Propeller("x", 0.1, 2, [0.02, 0.05, 0.1], [0.02, 0.02, 0.01], [0.5, 0.3, 0.2], source=None)
+    with pytest.raises(TypeError, match="name must be a catalogue propeller's name"):
+        pm.load_propeller(["apce_8x6"])
+    with pytest.raises(KeyError, match="not a catalogue name, nor a geometry file"):
+        resolve_propeller("x" * 5000)
+    with pytest.raises(TypeError):  # (read-only: no item assignment, and no pop at all)
+        pm.PRESETS["gill2017-soft"] = None
+    assert not hasattr(pm.PRESETS, "pop")
+    pe0 = shared_data / "apc_vendor_data" / "geometry_PE0" / "10x10-PERF.PE0"
+    for kwargs, match in ((dict(diameter_in=float("nan")), "diameter_in must be finite and > 0 in"),
+                          (dict(n_blades=np.array([2, 2])), "n_blades must be an integer"),
+                          (dict(n_blades="2"), "n_blades must be an integer")):
+        with pytest.raises(GeometryFileError, match=match):
+            pm.read_geometry(pe0, **kwargs)

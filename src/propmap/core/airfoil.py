@@ -29,7 +29,9 @@ element in core/polar.py (``lift_coefficient``, ``drag_coefficient``).
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import asdict, dataclass, field, fields, replace
+from types import MappingProxyType
 from typing import Self
 
 import numpy as np
@@ -184,9 +186,9 @@ class RotorOptions:
             raise ValueError(f"air must be a propmap.Air, got {type(self.air).__name__}")
         if not isinstance(self.label, str):
             raise ValueError(f"label must be text, got {type(self.label).__name__}")
-        if self.inflow not in INFLOW_MODELS:
+        if not isinstance(self.inflow, str) or self.inflow not in INFLOW_MODELS:  # (an array compared element-wise)
             raise ValueError(f"inflow must be one of {', '.join(INFLOW_MODELS)}, got {self.inflow!r}")
-        if self.descent not in DESCENT_MODELS:
+        if not isinstance(self.descent, str) or self.descent not in DESCENT_MODELS:  # (an array compared element-wise)
             raise ValueError(f"descent must be one of {', '.join(DESCENT_MODELS)}, got {self.descent!r}")
         object.__setattr__(self, "flap_compliance",
                            checked("flap_compliance", self.flap_compliance, 0.0, FLAP_COMPLIANCE_MAX,
@@ -356,7 +358,7 @@ class AirfoilParams(RotorOptions):
         if not 0.0 < a0 < math.pi / 2:
             raise ValueError(f"alpha0 must be in (0, pi/2) rad, got {a0!r}")
         object.__setattr__(self, "alpha0", a0)
-        if self.lift_model not in LIFT_MODELS:
+        if not isinstance(self.lift_model, str) or self.lift_model not in LIFT_MODELS:  # (arrays: element-wise)
             raise ValueError(f"lift_model must be one of {LIFT_MODELS}, got {self.lift_model!r}")
 
 
@@ -378,12 +380,15 @@ def _replace(p, changes: dict):
             k.endswith("_deg") for k in unknown) else ""
         raise ValueError(f"unknown parameter(s) {', '.join(unknown)} of {type(p).__name__}{hint}; valid: "
                          f"{', '.join(valid)}")
-    moved = [k for k, v in changes.items() if k not in RECORD_META and _differs(v, getattr(p, k))]
+    new = replace(p, **changes)
+    # (the fields as the new record holds them, checked and converted: a float32 cl_max compared equal in float32 to
+    # the float64 it changed, and the set kept its name, an API audit)
+    moved = [k for k in changes if k not in RECORD_META and _differs(getattr(new, k), getattr(p, k))]
     if moved and "label" not in changes and p.label and not p.label.startswith("modified "):
         # a changed set is no longer the named one: its validation figures and coverage
         # (io.uncertainty, io.calibration.coverage, looked up by label) are not its own
-        changes = {**changes, "label": f"modified {p.label}"}
-    return replace(p, **changes)
+        return replace(new, label=f"modified {p.label}")
+    return new
 
 
 def _check_flags(p) -> None:
@@ -524,11 +529,11 @@ SectionParams = AirfoilParams | CamberedParams
 
 
 #: Table I of Gill & D'Andrea (2017); constants from footnote 2.
-PRESETS: dict[str, AirfoilParams] = {
+PRESETS: Mapping[str, AirfoilParams] = MappingProxyType({
     "gill2017-soft": AirfoilParams(cl1=6.9, cl2=2.0, cd=3.7, alpha0=math.radians(20.4)),
     "gill2017-stiff": AirfoilParams(cl1=4.2, cl2=2.0, cd=1.3, alpha0=math.radians(27.5)),
     "gill2017-apc": AirfoilParams(cl1=5.3, cl2=1.7, cd=1.8, alpha0=math.radians(20.6)),
-}
+})
 
 
 def preset(name: str) -> AirfoilParams:

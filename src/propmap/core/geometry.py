@@ -189,13 +189,13 @@ class Propeller:
     ------
     ValueError
         Naming the argument: a value of the wrong type (a bool, a string; a non-integer
-        ``n_blades``; a ``name`` that is not a string; stations not 1-D; a masked array with
+        ``n_blades``; a ``name`` or ``source`` that is not a string; stations not 1-D; a masked array with
         masked entries, whose values NumPy would use as if given), non-finite values,
         ``radius <= 0``, ``n_blades < 1``, a non-finite ``pitch``, arrays of different length
         or fewer than 2 stations, radii not strictly increasing or outside (0, radius],
         negative chord or zero chord at every station, blade angle outside [-90, 90] deg, or
         stations that stop short of the tip where the extrapolation of the last ones (PCHIP's
-        end polynomials) to the tip leaves chord <= radius or |theta| <= 90 deg.
+        end polynomials) to the tip leaves chord <= radius or |theta| <= 90 deg (or overflows).
 
     Notes
     -----
@@ -216,6 +216,8 @@ class Propeller:
     def __post_init__(self) -> None:
         if not isinstance(self.name, str):  # (None or 5 reached maps and reports as a name)
             raise ValueError(f"name must be a string, got {type(self.name).__name__}")
+        if not isinstance(self.source, str):  # (as the name: maps and exports cite it)
+            raise ValueError(f"source must be a string, got {type(self.source).__name__}")
         radius = _real(self.radius)
         if radius is None or not (math.isfinite(radius) and radius > 0):
             raise ValueError(f"radius must be finite and > 0 m, got {short_repr(self.radius)}")
@@ -237,7 +239,7 @@ class Propeller:
         if r[-1] < radius:  # the end polynomials carry the blade to the tip: they must give a blade
             y = np.linspace(r[-1], radius, 65)
             c_max, th_max = float(np.max(self._chord_spline(y))), float(np.max(np.abs(self._theta_spline(y))))
-            if c_max > radius or th_max > math.pi / 2:
+            if not (c_max <= radius and th_max <= math.pi / 2):  # (NaN too: an overflowing spline passed)
                 raise ValueError(
                     f"the blade from the last station (r = {r[-1]:.6g} m, {r[-1] / radius:.4g} R) to the tip "
                     f"extrapolates to a chord of {c_max / radius:.3g} R and a blade angle of "

@@ -261,8 +261,10 @@ class RotorLoads:
 
     @property
     def CP(self) -> np.ndarray:
-        """P / (rho n^3 D^5) [-], propeller convention, shape S."""
-        return self._per_n(self.power, self.rho * self._n**3 * self.diameter**5)
+        """P / (rho n^3 D^5) [-], propeller convention, shape S: 2 pi CQ (P = Q Omega), computed so
+        (n^3 underflowed first: NaN at 1e-120 rad/s and 2% off at 1e-105 where CT and CQ were
+        right, an API audit)."""
+        return 2.0 * np.pi * self.CQ
 
     @property
     def J(self) -> np.ndarray:

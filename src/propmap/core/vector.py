@@ -35,7 +35,7 @@ VELOCITY_MAX = 1e150
 VELOCITY_INPUTS = ("airspeed", "incidence", STILL_AIR)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # (arrays: == of two wrenches raised, as RotorLoads' did before its eq=False)
 class RotorWrench:
     """Force and torque vectors of a rotor, in the frame the inputs were given in.
 

@@ -300,7 +300,6 @@ def catalogue_source(propeller: Propeller) -> str:
     return entry.citation if propeller.same_geometry(load_propeller(entry.name)) else ""
 
 
-@functools.lru_cache(maxsize=256)
 def load_propeller(name: str) -> Propeller:
     """The geometry of a catalogue propeller as a :class:`Propeller`.
 
@@ -321,6 +320,14 @@ def load_propeller(name: str) -> Propeller:
     TypeError
         ``name`` not a str.
     """
+    if not isinstance(name, str):  # (before the cache: a list met "unhashable type", an API audit)
+        raise TypeError(f"name must be a catalogue propeller's name (str), got {type(name).__name__}")
+    return _load_propeller(name)
+
+
+@functools.lru_cache(maxsize=256)
+def _load_propeller(name: str) -> Propeller:
+    """:func:`load_propeller`'s cached reading (one Propeller object per name)."""
     e = get_entry(name)
     path = _data_path(e.geometry_file)
     if e.geometry_format != "uiuc":
@@ -381,11 +388,15 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
     if not spec.strip():
         raise KeyError("the propeller is empty: give a catalogue name or a geometry file")
     path = Path(spec)
-    if path.is_file():
+    try:  # (a name past the system's limit met "OSError: File name too long", an API audit)
+        kind = "file" if path.is_file() else "folder" if path.is_dir() else "other" if path.exists() else None
+    except OSError as exc:
+        raise KeyError(f"{shown}: {exc.strerror or exc}: not a catalogue name, nor a geometry file") from None
+    if kind == "file":
         return read_geometry(spec, diameter_in=diameter_in, n_blades=n_blades)
-    if path.is_dir():
+    if kind == "folder":
         raise KeyError(f"{shown} is a folder, not a catalogue name or a geometry file")
-    if path.exists():
+    if kind == "other":
         raise KeyError(f"{shown} is not a regular file")
     if len(path.parts) > 1 or path.suffix.lower() in (".txt", ".pe0", ".dat", ".csv"):  # a path: no file there
         import difflib

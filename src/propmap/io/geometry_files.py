@@ -402,11 +402,16 @@ def _own_size(path: Path, prop: Propeller, diameter_in, n_blades, kind: str, sta
     given's precision, :func:`_same_diameter`); ``states`` says where the file gives its blade count."""
     if diameter_in is not None:
         _check_number(diameter_in, "diameter_in", GeometryFileError, show_path(path))  # (the text "10" met a
-        if not _same_diameter(diameter_in, prop.diameter / 0.0254):  # bare "must be real number")
+        # bare "must be real number"; NaN and inf an IndexError of the decimals' count, an API audit)
+        if not (math.isfinite(float(diameter_in)) and float(diameter_in) > 0):
+            raise GeometryFileError(f"{show_path(path)}: diameter_in must be finite and > 0 in, got {diameter_in!r}")
+        if not _same_diameter(diameter_in, prop.diameter / 0.0254):
             raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a {kind} file gives "
                                     f"its own radius (diameter {prop.diameter / 0.0254:.8g} in): leave the "
                                     "option out (it applies to UIUC files), or give that diameter, to fewer "
                                     "decimals if you like (within 2%)")
+    if n_blades is not None:  # (an array met NumPy's "truth value is ambiguous"; the text "2" a self-contradiction)
+        _check_number(n_blades, "n_blades", GeometryFileError, show_path(path), integer=True)
     if n_blades is not None and n_blades != prop.n_blades:
         raise GeometryFileError(f"{show_path(path)}: n_blades = {n_blades}, but the {kind} file states {states}"
                                 f"{prop.n_blades}; the blade count applies to UIUC files (a wrong count scales "
