@@ -387,7 +387,7 @@ def _replace(p, changes: dict):
     if moved and "label" not in changes and p.label and not p.label.startswith("modified "):
         # a changed set is no longer the named one: its validation figures and coverage
         # (io.uncertainty, io.calibration.coverage, looked up by label) are not its own
-        return replace(new, label=f"modified {p.label}")
+        object.__setattr__(new, "label", f"modified {p.label}")  # (text, checked: not a second construction)
     return new
 
 
