@@ -264,7 +264,7 @@ class RotorLoads:
         """P / (rho n^3 D^5) [-], propeller convention, shape S: 2 pi CQ (P = Q Omega), computed so
         (n^3 underflowed first: NaN at 1e-120 rad/s and 2% off at 1e-105 where CT and CQ were
         right, an API audit)."""
-        return 2.0 * np.pi * self.CQ
+        return np.asarray(2.0 * np.pi * self.CQ)  # (an array, 0-d for one point, as the others)
 
     @property
     def J(self) -> np.ndarray:
