@@ -12,6 +12,7 @@ import numpy as np
 from ..core.air import air_words
 from ..core.units import RPM
 from .. import __version__
+from ..io.atomic import atomic_paths, check_file_name, file_sha256
 from ..io.inputs import as_path
 from ..vehicle.layout import check_vehicle
 from .fit import LOADS, SimExport
@@ -321,8 +322,6 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
         check_vehicle(vehicle)
     if not isinstance(res, SimExport):
         raise TypeError(f"res must be a SimExport (propmap.export_sim), got {type(res).__name__}")
-    from ..io.atomic import check_file_name
-
     check_file_name(path)
     path = as_path(path)
     if path.name.lower().endswith(".report.json"):
@@ -348,7 +347,6 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
                            "conventions": MULTINOMIAL_CONVENTIONS,
                            "propeller": res.meta.get("propeller"), "params": res.meta.get("params"),
                            **res.coefficients, "fixed_at_zero": res.fixed}, indent=2) + "\n"
-    from ..io.atomic import atomic_paths, file_sha256
     from ..io.mapfile import _json_safe
 
     report = report_path(path)

@@ -138,10 +138,9 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
     # read as 800, an export audit)
     om, V, b = np.broadcast_arrays(*(_as_array(k, x) for k, x in (("omega", omega), ("airspeed", airspeed),
                                                                    ("incidence", incidence))))
-    bad = ~(om > 0) if target == "multinomial" else ~(om >= 0)  # (the multinomial is singular at 0)
-    if bad.any():
-        raise ValueError(f"omega must be {'>' if target == 'multinomial' else '>='} 0 rad/s for the {target} model "
-                         f"(the rotation rate's magnitude), got {float(om[bad].reshape(-1)[0])!r}")
+    # (below 0 and NaN refused above, as rotor_loads refuses them; the multinomial is singular at 0 as well)
+    if target == "multinomial" and np.any(om == 0):
+        raise ValueError(f"omega must be > 0 rad/s for the {target} model (the rotation rate's magnitude), got 0.0")
     Vip, Vz = V * np.sin(b), V * np.cos(b)
     c = coefficients
     if target == "rotorpy":
