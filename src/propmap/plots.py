@@ -1,24 +1,67 @@
-"""Figures (matplotlib, imported lazily so the core never depends on it)."""
+"""Figures (matplotlib, imported lazily so the core never depends on it).
+
+Each figure is drawn on its own Agg canvas, not through ``matplotlib.pyplot``: drawing one
+neither selects nor changes the session's backend and leaves no figure open, also where the
+drawing or the writing fails.
+"""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import numpy as np
 
 from .io.atomic import atomic_write
 
-__all__ = ["plot_validation", "plot_envelope", "plot_cv_summary", "plot_cases", "plot_flight_timeseries",
-           "plot_flight_speed"]
+__all__ = ["require_matplotlib", "plot_validation", "plot_envelope", "plot_cv_summary", "plot_cases",
+           "plot_flight_timeseries", "plot_flight_speed"]
 
 
-def _pyplot():
-    import matplotlib
+def require_matplotlib():
+    """matplotlib, imported; a clear error where the environment keeps it from importing.
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    propmap draws on matplotlib's Agg canvas directly (:class:`matplotlib.figure.Figure`), not
+    through ``matplotlib.pyplot``: it neither selects nor changes the session's backend, and
+    keeps no figure open. The CLI calls this before a command's work where a figure is asked
+    for, so that such an error comes before any output is written.
 
-    return plt
+    Returns
+    -------
+    module
+        ``matplotlib``.
+
+    Raises
+    ------
+    ValueError
+        Where ``import matplotlib`` refuses the environment variable ``MPLBACKEND`` (a name
+        matplotlib does not know): the error names the variable and its value.
+    """
+    try:
+        import matplotlib
+    except ValueError:  # (matplotlib validates $MPLBACKEND on import, an audit, stop 102)
+        backend = os.environ.get("MPLBACKEND")
+        if backend is None:
+            raise
+        raise ValueError(f"the environment variable MPLBACKEND={backend!r} is not a matplotlib backend, so "
+                         "matplotlib does not import: unset it or name one (propmap's figures need none)") from None
+    return matplotlib
+
+
+def _figure(nrows: int, ncols: int, figsize, **subplots):
+    """A new figure on its own Agg canvas and its axes (``Figure.subplots``): no pyplot state."""
+    require_matplotlib()
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=figsize, layout="constrained")
+    FigureCanvasAgg(fig)
+    return fig, fig.subplots(nrows, ncols, **subplots)
+
+
+def _colors() -> list:
+    """The colour cycle of the session's matplotlib style."""
+    return require_matplotlib().rcParams["axes.prop_cycle"].by_key()["color"]
 
 
 #: figure formats by file extension (anything else is written as PNG)
@@ -30,7 +73,6 @@ def _save(fig, path) -> Path:
     fmt = path.suffix.lower().lstrip(".")
     with atomic_write(path, "wb") as fh:
         fig.savefig(fh, format=fmt if fmt in FIGURE_FORMATS else "png", dpi=120)
-    _pyplot().close(fig)
     return path
 
 
@@ -57,9 +99,8 @@ def plot_validation(validation, path, *, title: str = "") -> Path:
     Path
         ``path``.
     """
-    plt = _pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig, axes = _figure(1, 2, (11, 4.2))
+    colors = _colors()
     for k, run in enumerate(validation.runs):
         c = colors[k % len(colors)]
         for ax, meas, mod in ((axes[0], run.CT, run.CT_model), (axes[1], run.CP, run.CP_model)):
@@ -105,9 +146,18 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
     -------
     Path
         ``path``.
+
+    Raises
+    ------
+    ValueError
+        Where a column is missing or no row has a finite thrust (nothing to draw).
     """
-    plt = _pyplot()
-    fig, axes = plt.subplots(1, 3, figsize=(14, 4.2), constrained_layout=True)
+    missing = [c for c in ("airspeed", "incidence_deg", "thrust", "drag", "thrust_hover") if c not in table]
+    if missing:
+        raise ValueError(f"table: no column {', '.join(missing)} (plot_envelope draws propmap demo's envelope table)")
+    if not np.isfinite(np.asarray(table["thrust"], float)).any():  # (empty panels were written, stop 102)
+        raise ValueError(f"table: no finite thrust among its {len(table)} rows: nothing to draw")
+    fig, axes = _figure(1, 3, (14, 4.2))
     T_hover = float(table.thrust_hover.abs().max())  # one scale for every curve (the rpm's hover thrust)
     for inc, g in table.groupby("incidence_deg"):
         g = g.sort_values("airspeed")
@@ -127,16 +177,36 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
 
 
 def plot_level_flight_fit(data, forces, hover_vertical, weight, path, *, title: str = "") -> Path:
-    """Like Fig. 6 of Gill & D'Andrea (2017): model (BET+BEMT) vs hover model against speed.
+    """Like Fig. 6 of Gill & D'Andrea (2017): the model (BET+BEMT) against speed, the hover
+    model beside it where it has a value (rotor drag 0, the vertical-force error).
 
     Panels: collective thrust, collective drag, sum of |torque|, vertical-force error
-    (eq 17; the ground truth is 0), pitch. ``forces`` is the dict of
-    ``level_flight_forces``; ``hover_vertical`` the hover model's vertical force [N].
+    (eq 17; the ground truth is 0), pitch.
+
+    Parameters
+    ----------
+    data : LevelFlightData
+        The level-flight samples: ``airspeed`` [m/s] and ``pitch`` [rad], shape (N,).
+    forces : dict
+        ``level_flight_forces``' result: ``"thrust"``, ``"drag"`` [N] and ``"torque"`` [N m],
+        shape (N, n_rotors), and ``"vertical"`` [N], shape (N,).
+    hover_vertical : array_like, shape (N,)
+        The hover model's vertical force [N].
+    weight : float or array_like, shape (N,)
+        The vehicle's weight [N].
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
-    plt = _pyplot()
     V = data.airspeed
     o = np.argsort(V)
-    fig, axes = plt.subplots(1, 5, figsize=(17, 3.6), constrained_layout=True)
+    fig, axes = _figure(1, 5, (17, 3.6))
     T_h = hover_vertical  # hover thrust is vertical-only in level flight up to the tilt
     axes[0].plot(V[o], forces["thrust"].sum(1)[o], "o-", ms=3, label="BET+BEMT")
     axes[0].set_ylabel("collective thrust [N]")
@@ -163,12 +233,29 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
                   baseline_label: str = "Table I") -> Path:
     """Like Fig. 7 of Gill & D'Andrea (2017) for a load fit: CT and CP vs J, measured
     (filled: used in the fit, open: held out), fitted model (solid), baseline parameters
-    (dotted) and the hover model (dashed). Runs are :class:`SweepComparison` lists of the
-    same measurements evaluated with the fitted and baseline parameters.
+    (dotted) and the hover model (dashed).
+
+    Parameters
+    ----------
+    runs_fitted, runs_baseline : list of SweepComparison
+        The same runs (static and J-sweeps, in one order) evaluated with the fitted and with
+        the baseline parameters: J, measured and modelled CT and CP, the hover model's.
+    holdout : set of str
+        The run ids held out of the fit (drawn with open markers).
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+    baseline_label : str
+        The baseline parameters' name in the legend.
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
-    plt = _pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig, axes = _figure(1, 2, (11, 4.2))
+    colors = _colors()
     for k, (rf, rb) in enumerate(zip(runs_fitted, runs_baseline)):
         c = colors[k % len(colors)]
         held = rf.run_id in holdout
@@ -195,11 +282,27 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
 def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> Path:
     """Measured vs modelled loads, one panel per measured quantity (open markers: held out).
 
-    ``model`` maps a label (e.g. "fitted", "gill2017-apc") to a dict of model arrays.
+    Parameters
+    ----------
+    data : LoadData
+        The measurements: ``measured`` maps a quantity (thrust, drag [N], torque,
+        rolling_moment [N m]) to shape (N,).
+    model : dict
+        Label (e.g. "fitted", "gill2017-apc") -> {quantity -> the model's values, shape (N,)}.
+    held_mask : array_like of bool, shape (N,)
+        The points held out of the fit.
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
-    plt = _pyplot()
     keys = list(data.measured)
-    fig, axes = plt.subplots(1, len(keys), figsize=(4.5 * len(keys), 4), constrained_layout=True, squeeze=False)
+    fig, axes = _figure(1, len(keys), (4.5 * len(keys), 4), squeeze=False)
     units = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
     for ax, k in zip(axes[0], keys):
         meas = data.measured[k]
@@ -227,7 +330,8 @@ def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
     ----------
     catalogue_result : dict
         Its ``summary`` keys (the protocols) each give a curve, from the ``rms_ct`` and
-        ``rms_cp`` (fractions) of that key in every row of ``propellers``.
+        ``rms_cp`` (fractions) of that key in every row of ``propellers``; a row without the
+        key, or with None there (a propeller the protocol did not score), is left out.
     path : str or Path
         Figure file, written atomically; the format from the extension (png, pdf, svg;
         any other: PNG).
@@ -240,16 +344,17 @@ def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
     Path
         ``path``.
     """
+    require_matplotlib()
     from matplotlib import ticker
 
     from .io.catalogue import APC_CITATION, UIUC_CITATION, UIUC_V2_CITATION
 
-    plt = _pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
+    fig, axes = _figure(1, 2, (11, 4.2))
     rows = catalogue_result["propellers"]
     for key in catalogue_result["summary"]:
         for ax, q in zip(axes, ("rms_ct", "rms_cp")):
-            v = np.sort([100 * r[key][q] for r in rows])
+            # (a propeller a protocol did not score, None, is left out of its curve, an audit, stop 102)
+            v = np.sort([100 * r[key][q] for r in rows if r.get(key) and r[key].get(q) is not None])
             ax.step(v, np.arange(1, v.size + 1) / v.size, where="post", label=key)
     for ax, q in zip(axes, ("|dCT| / static CT", "|dCP| / static CP")):
         ax.set_xlabel(f"rms {q} on held-out data [%]")
@@ -293,8 +398,7 @@ def plot_cases(cases: dict, path) -> Path:
     Path
         ``path``.
     """
-    plt = _pyplot()
-    fig, axes = plt.subplots(1, 5, figsize=(21, 4.2), constrained_layout=True)
+    fig, axes = _figure(1, 5, (21, 4.2))
     a = cases.get("apc10x7e")
     if a is not None:
         for ax, q in zip(axes[:2], ("CT", "CQ")):
@@ -342,27 +446,48 @@ def plot_cases(cases: dict, path) -> Path:
 def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
     """Contours of a rotor map at the grid rpm nearest ``rpm``: T, D, Q, and the hover
     model's thrust error T_hover - T (T_hover: the map's static thrust at that rpm), over
-    (airspeed, incidence), with the flagged nodes (vortex ring, multiple roots) hatched.
+    (airspeed, incidence), with the flagged nodes (vortex ring, multiple roots, not converged)
+    hatched.
 
     Parameters
     ----------
     ds : xarray.Dataset
-        A map (propmap.maps.build_map).
+        A map (propmap.maps.build_map) with at least two airspeed and two incidence nodes.
+        The hover-model panel is drawn only where its airspeed axis has a node at 0 m/s (the
+        static thrust); a map whose axis starts above 0 gets the other three panels.
     rpm : float
         [rpm]; the nearest grid row is drawn.
     path : str or Path
-        Figure file (format from the extension: png, pdf, svg).
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    ValueError
+        Where the map has fewer than two airspeed or incidence nodes (no contour to draw).
     """
-    plt = _pyplot()
     row = ds.sel(rpm=rpm, method="nearest")
     V = row["airspeed"].values
     inc = row["incidence_deg"].values
-    t_static = float(row["thrust"].sel(airspeed=0.0, method="nearest").values[0])
+    if V.size < 2 or inc.size < 2:
+        raise ValueError(f"a contour figure needs at least two airspeed and two incidence nodes; the map has "
+                         f"{V.size} and {inc.size}")
     panels = [("thrust", row["thrust"].values, "thrust T [N]"), ("drag", row["drag"].values, "rotor drag D [N]"),
-              ("torque", row["torque"].values, "torque Q [N m]"),
-              ("hover", t_static - row["thrust"].values, "hover model error T_hover - T [N]")]
+              ("torque", row["torque"].values, "torque Q [N m]")]
+    # the hover model's static thrust is the map's at 0 m/s: where the axis has no such node the panel is left
+    # out (the nearest node, 5 m/s of an axis 5:15, drew its own error as 0, an audit, stop 102)
+    static = np.flatnonzero(V == 0.0)
+    if static.size:
+        t_static = float(row["thrust"].sel(airspeed=0.0).values.flat[0])
+        panels.append(("hover", t_static - row["thrust"].values, "hover model error T_hover - T [N]"))
     flagged = (row["vortex_ring"].values | row["multiple_roots"].values | ~row["converged"].values).astype(float)
-    fig, axes = plt.subplots(1, 4, figsize=(18, 4.2), constrained_layout=True)
+    fig, axes = _figure(1, len(panels), (4.5 * len(panels), 4.2))
     for ax, (key, z, label) in zip(axes, panels):
         cmap = "RdBu_r" if key == "hover" else "viridis"
         lim = np.nanmax(np.abs(z)) if key == "hover" else None
@@ -372,7 +497,9 @@ def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
             ax.contourf(inc, V, flagged, levels=[0.5, 1.5], colors="none", hatches=["//"])
         ax.set_xlabel("incidence [deg] (0 climb, 90 edgewise, 180 descent)")
         ax.set_ylabel("airspeed V [m/s]")
-    fig.suptitle(f"{title} at {float(row['rpm']):.0f} rpm (hatched: vortex ring or multiple roots)", fontsize=9)
+    fig.suptitle(f"{title} at {float(row['rpm']):.0f} rpm (hatched: vortex ring, multiple roots or not converged)"
+                 + ("" if static.size else f"; no hover-model panel: the airspeed axis starts at {V.min():g} m/s"),
+                 fontsize=9)
     return _save(fig, path)
 
 
@@ -401,10 +528,8 @@ def plot_flight_timeseries(t_by_log: dict, measured: dict, predicted: dict, path
     Path
         ``path``.
     """
-    plt = _pyplot()
     names = list(t_by_log)
-    fig, axes = plt.subplots(3, len(names), figsize=(4.2 * len(names), 7), squeeze=False, constrained_layout=True,
-                             sharey="row")
+    fig, axes = _figure(3, len(names), (4.2 * len(names), 7), squeeze=False, sharey="row")
     for j, name in enumerate(names):
         t = t_by_log[name]
         for k, axis in enumerate("xyz"):
@@ -452,9 +577,16 @@ def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, pat
     -------
     Path
         ``path``.
+
+    Raises
+    ------
+    ValueError
+        Where ``speed`` is empty or holds a value that is not finite.
     """
-    plt = _pyplot()
-    speed = np.asarray(speed)
+    speed = np.asarray(speed, float)
+    if speed.size == 0 or not np.isfinite(speed).all():  # ("arange: cannot compute length", stop 102)
+        raise ValueError(f"speed: give finite speeds [m/s] of at least one sample, got {speed.size} samples, "
+                         f"{int(np.sum(~np.isfinite(speed)))} of them not finite")
     edges = np.arange(0.0, max(float(np.max(speed)), 1.0) + 1.0, 1.0)
     centre = 0.5 * (edges[1:] + edges[:-1])
 
@@ -466,7 +598,7 @@ def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, pat
                 out[i] = np.median(np.asarray(y)[m])
         return out
 
-    fig, axes = plt.subplots(1, 4, figsize=(15, 3.6), constrained_layout=True)
+    fig, axes = _figure(1, 4, (15, 3.6))
     labels = (("thrust", "collective thrust [N]"), ("drag", "collective in-plane force [N]"),
               ("torque", "sum |torque| [N m]"))
     for ax, (key, ylabel) in zip(axes, labels):

@@ -110,6 +110,9 @@ def demo(out_dir: Path, rpm: float):
         # the hover model's check failed after the demo had begun, naming omega in rad/s, a user-level audit)
         raise InputError(f"--rpm must be finite and in [{DEMO_RPM_MIN:g}, {RPM_MAX:.0f}], got {rpm!r} (the demo's "
                          "hover model, k_T = T / Omega^2, needs Omega >= 1 rad/s)")
+    from ..plots import require_matplotlib
+
+    require_matplotlib()  # (its figures come after the fits, stop 102)
     check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
     from ..core.airfoil import preset
     from ..io.atomic import atomic_write
@@ -141,8 +144,9 @@ def demo(out_dir: Path, rpm: float):
     click.echo(f"   {'V [m/s]':>8}{'incid.':>8}{'T [N]':>9}{'D [N]':>8}{'Q [N m]':>10}{'T_hover - T':>13}")
     for _, row in table[table.airspeed.isin([0.0, 10.0, 20.0])].iterrows():
         err = row["thrust_hover"] - row["thrust"]
-        click.echo(f"   {row['airspeed']:>8.0f}{row['incidence_deg']:>8.0f}{row['thrust']:>9.3f}{row['drag']:>8.3f}"
-                   f"{row['torque']:>10.4f}{err:>+9.3f} N {100 * err / row['thrust_hover']:>+4.0f}%  {row['flags']}")
+        # (a space before each column: at the top of the rpm range a thrust ran into the incidence, stop 102)
+        click.echo(f"   {row['airspeed']:>8.0f}{row['incidence_deg']:>8.0f} {row['thrust']:>8.3f} {row['drag']:>7.3f} "
+                   f"{row['torque']:>9.4f} {err:>+8.3f} N {100 * err / row['thrust_hover']:>+4.0f}%  {row['flags']}")
     fig1 = plot_envelope(table, out_dir / "envelope.png",
                          title=f"{PROP} at {rpm:g} rpm, cambered model ({generic_label}) vs hover model\n"
                                f"{prop.source}; the set fitted to UIUC vol. 1 and 2 (Brandt & Selig 2011; "

@@ -114,11 +114,14 @@ def _options(choice: FitChoice, base=None, base_label="", extra_names=()):
 
 
 def _out_files(out: Path) -> list:
-    """(option, path) of every file a fit writes: the parameters and, beside them, reports and figure.
+    """(option, path) of every file a fit writes: the parameters and, beside them, reports and figure
+    (matplotlib checked here, before the fit: ``plots.require_matplotlib``).
     A parameter file's name ends in .toml (``--out f.report.json`` wrote TOML over another fit's
     report: a user-level audit; the commands tell a parameter file by that suffix)."""
     from ..io.inputs import short_path
+    from ..plots import require_matplotlib
 
+    require_matplotlib()  # (the figure comes last: an unusable matplotlib is said before any work, stop 102)
     if Path(out).suffix.lower() != ".toml":
         raise InputError("--out: a parameter file is TOML: give a name ending in .toml, got "
                          f"{short_path(out, quote=True)}")

@@ -293,10 +293,11 @@ def _figures(samples, names, held, pred, baselines, veh, params, air, vehicle):
         loads = {"thrust": sum(lo.thrust for lo in pred.loads), "drag": sum(lo.drag for lo in pred.loads),
                  "torque": sum(np.abs(lo.torque) for lo in pred.loads)}
         vertical = {"BET+BEMT (fitted)": pred.force[:, 2] - samples.force[:, 2],
-                    "hover model": hover["thrust"] - samples.force[:, 2]}
+                    "hover model": hover["vertical"] - samples.force[:, 2]}
         stem = png.with_suffix("")
         plot_flight_speed(samples.speed, loads, hover, vertical, stem.with_name(stem.name + ".speed.png"),
-                          title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
+                          title=f"as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed "
+                                f"({shown}); held out: {', '.join(sorted(held)) or 'none'}")
 
     return figures
 
@@ -408,19 +409,25 @@ def _held_beyond(logs, held, coverage: dict, veh, air) -> list[str]:
 
 
 def _hover_loads(params, veh, samples, air):
-    """The hover model of every rotor (T = k_T Omega^2, D = 0, Q = k_Q Omega^2), summed."""
+    """The hover model of every rotor (T = k_T Omega^2, D = 0, Q = k_Q Omega^2), summed: its thrust
+    along each rotor's axis (as the fitted model's collective thrust beside it) and, as "vertical",
+    its body-z component (as the vertical-force error needs; the thrust panel drew that, an audit,
+    stop 102)."""
     import numpy as np
 
     from ..core.hover import HoverModel
 
     om = samples.rotor_omega
     T = np.zeros(samples.n)
+    Z = np.zeros(samples.n)
     Q = np.zeros(samples.n)
     for i, r in enumerate(veh.rotors):
         h = HoverModel.from_model(r.propeller, r.params or params, float(np.median(om[:, i])), air=air)
-        T += h.thrust(om[:, i]) * r.axis[2]
+        T_i = h.thrust(om[:, i])
+        T += T_i
+        Z += T_i * r.axis[2]
         Q += np.abs(h.torque(om[:, i]))
-    return {"thrust": T, "drag": np.zeros(samples.n), "torque": Q}
+    return {"thrust": T, "vertical": Z, "drag": np.zeros(samples.n), "torque": Q}
 
 
 def _fitted_to(sets, log_path, log_name: str) -> str:

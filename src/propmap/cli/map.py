@@ -214,7 +214,8 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         if collective_deg is not None:
             params, label = _with_collective(params, label, collective_deg)
         rpm, V, inc = _axes(propeller, axes)
-        plots = _plot_files(plot.plot_dir, rpm, plot.plot_rpm, inputs, outputs) if plot.plot_dir is not None else []
+        plots = [] if plot.plot_dir is None else _plot_files(plot.plot_dir, (rpm, V, inc), plot.plot_rpm, inputs,
+                                                             outputs)
     t0 = time.perf_counter()
     with _scheduler(scheduler) as client:
         if all_props:
@@ -311,9 +312,13 @@ def _one_map_vehicle(veh, propeller, params, label: str):
 
 def _with_collective(params, label: str, collective_deg: float):
     """The parameter set with --collective-deg added to its own collective, checked against
-    [-30, 30] deg in sum, and its label saying so."""
+    [-30, 30] deg in sum, and its label saying so; a 0 leaves the set and its label as they are
+    (its collective was rounded to 12 digits and its label changed, which lost the set's model
+    uncertainty: an audit, stop 102)."""
     from ..core.airfoil import COLLECTIVE_MAX
 
+    if collective_deg == 0.0:
+        return params, label
     # (12 digits: 30 deg is degrees(COLLECTIVE_MAX) = 29.999999999999996, and must pass)
     set_deg = set_collective_deg(params)
     total = float(f"{set_deg + collective_deg:.12g}")
@@ -446,17 +451,33 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
                 combined.close()
 
 
-def _plot_files(plot_dir: Path, rpm, plot_rpm: str | None, inputs, outputs=()) -> list:
+def _plot_files(plot_dir: Path, grid, plot_rpm: str | None, inputs, outputs=()) -> list:
     """(node rpm, figure path) of each contour map, checked as outputs before any work, beside the
-    command's ``outputs`` ((option, path): the map and its sidecar).
+    command's ``outputs`` ((option, path): the map and its sidecar); ``grid`` the map's (rpm,
+    airspeed [m/s], incidence [deg]) axes. Warns where the airspeed axis has no node at 0 m/s
+    (the figures then leave out the hover model's panel).
 
     Raises
     ------
     InputError
         A --plot-rpm value that is not a number within the rpm axis, two values on one
-        node, or an unusable figure path (an input among them).
+        node, an airspeed or incidence axis of one node (no contour), or an unusable figure
+        path (an input among them).
+    ValueError
+        Where matplotlib does not import (``plots.require_matplotlib``: an unknown MPLBACKEND).
     """
     import numpy as np
+
+    from ..plots import require_matplotlib
+
+    rpm, V, inc = grid
+    require_matplotlib()  # (before the build: it failed after the map was written, an audit, stop 102)
+    if V.size < 2 or inc.size < 2:
+        raise InputError(f"--plot: a contour needs at least two nodes on --airspeed and --incidence-deg; the grid "
+                         f"has {V.size} and {inc.size}")
+    if not np.any(V == 0.0):
+        warn(f"--plot: the airspeed axis starts at {float(np.min(V)):g} m/s, without the static node, so the figures "
+             "leave out the hover model's error panel (it needs the static thrust)")
 
     if plot_rpm is None:
         nodes = [float(rpm[len(rpm) // 2])]

@@ -120,6 +120,9 @@ def _validate_all(sources, params_spec, air_choice, figure, protocols, only, out
     protocols = parse_names("--protocols", protocols, valid=PROTOCOLS, what="protocol") or PROTOCOLS
     only = parse_names("--props", only, what="propeller name") or ()
     if out_dir is not None:
+        from ..plots import require_matplotlib
+
+        require_matplotlib()  # (its figures come after the whole run, stop 102)
         check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
     run_all(list(protocols), list(only), out_dir, as_json)
 
@@ -129,6 +132,9 @@ def _validate_catalogue(prop: str, params_spec, air_choice, figure, as_json) -> 
     and J-sweep data, printed (or as JSON), with the figure where --figure names one, and what
     of the data the set was fitted to."""
     if figure is not None:
+        from ..plots import require_matplotlib
+
+        require_matplotlib()  # (the figure comes after the validation, stop 102)
         if figure.suffix.lower() not in (".png", ".pdf", ".svg"):
             raise InputError(f"--figure: {figure}: give a .png, .pdf or .svg file name (the format follows it)")
         check_outputs([("--figure", figure)], [params_spec])
