@@ -18,6 +18,7 @@ import numpy as np
 
 from ..core._numbers import integer
 from ..core.units import RPM
+from ..io.params_tables import COVERAGE_TEXT_MAX
 from .csvfile import RANGES, DataError, _Csv
 from .headers import AXIAL_RATES, RATIO_TO_AIRSPEED
 from .loads_air import _air_density, _conditions_density
@@ -182,6 +183,12 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         if empty.size:
             raise DataError(f"{what}: {p}: column {group_col!r} is empty at line {int(lines[empty[0]])} ({empty.size} "
                             "row(s)): give every row its group label, or drop the column")
+        # (a fit's [coverage] lists the groups, each of at most COVERAGE_TEXT_MAX characters: a longer label was
+        # refused once the whole fit had run, naming [coverage], not the column: an audit, stop 102)
+        long = np.flatnonzero(np.array([len(str(g)) > COVERAGE_TEXT_MAX for g in group]))
+        if long.size:
+            raise DataError(f"{what}: {p}: column {group_col!r} holds a label of {len(str(group[long[0]]))} "
+                            f"characters at line {int(lines[long[0]])}: at most {COVERAGE_TEXT_MAX}")
     v, group, lines, n, averaged = _steps_or_points(f, cm, v, group, lines, what, p, notes)
     # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
     if "thrust" in v and n:

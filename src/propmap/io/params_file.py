@@ -70,7 +70,7 @@ file's other keys override it. ``--params section:naca0015`` names the preset al
     [body]
     drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
     wash_factor = 1.0                   # optional (default 0), slipstream factor, in [0, 3] (core/body.py)
-    centre_of_mass = [0.002, -0.001, 0.0]   # [m], each in [-1, 1]: the fitted centre of mass in
+    centre_of_mass = [0.002, -0.001, 0.0]   # [m], each in [-100, 100]: the fitted centre of mass in
                                             # the vehicle file's frame (optional)
     rotor_interference = 1.0            # optional, in [0, 3]: the fitted factor on the inflow the
                                         # rotors' wakes induce at each other (core/interference.py)
@@ -91,6 +91,7 @@ text keys (``comment``, ``source``) must be TOML strings.
 from __future__ import annotations
 
 import contextlib
+import difflib
 import functools
 import math
 import os
@@ -222,7 +223,11 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
     if unknown:
         shown = ", ".join(short_repr(k, 40) if not k.isidentifier() else k for k in unknown[:5])
         more = f" and {len(unknown) - 5} more" if len(unknown) > 5 else ""
-        raise ValueError(f"{where}: unknown key(s) {shown}{more} for section_model {model!r}")
+        known = sorted(set(keys) | set(AIR_KEYS) | set(TEXT_KEYS))
+        close = difflib.get_close_matches(unknown[0], known, n=1)  # (the valid keys named, an audit, stop 102)
+        hint = f": did you mean {close[0]}?" if close else ""
+        raise ValueError(f"{where}: unknown key(s) {shown}{more} for section_model {model!r}{hint} (its keys: "
+                         f"{', '.join(known)})")
     for key in ("comment", "source"):
         if key in data and not isinstance(data[key], str):
             raise ValueError(f"{where}: {key} must be text (a TOML string), got {short_repr(data[key])}")
@@ -392,7 +397,7 @@ def params_to_dict(params: SectionParams, air: Air | None = None) -> dict:
     -------
     dict
         ``section_model`` and every field under its file key (``alpha0_deg``,
-        ``alpha_L0_deg``, ``alpha_L0_re_deg`` in degrees), and ``rho``, ``mu``,
+        ``alpha_L0_deg``, ``alpha_L0_re_deg``, ``collective_deg`` in degrees), and ``rho``, ``mu``,
         ``speed_of_sound``. ``params_from_dict`` gives back the record with its angles
         equal to within the degree-radian round trip (relative 2e-16).
 
@@ -470,7 +475,10 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         What the data behind a fitted set covered (keys of :data:`COVERAGE_KEYS`, and of
         :data:`COVERAGE_TEXT_KEYS`: the data's label and the groups fitted and held out),
         written as the ``[coverage]`` table: later uses of the file warn beyond it, and
-        ``propmap validate`` labels its groups in-sample or held out.
+        ``propmap validate`` labels its groups in-sample or held out. Default (None): the
+        set's own where propmap knows it, :func:`set_coverage` of ``params.label`` (a shipped
+        set's, or the ``[coverage]`` of the file the set was read from), so that the file warns
+        as the set did; ``{}`` writes none.
 
     Raises
     ------
@@ -482,8 +490,9 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         AttributeErrors, a user-level audit, 2026-11-30), ``comment`` not a str, ``path``
         not a path.
     ValueError
-        A ``coverage`` that :func:`read_params` would refuse (an unknown key, a value out of
-        its range, a list of texts given as one text), named; nothing is written.
+        A ``coverage`` or ``body`` that :func:`read_params` (:func:`read_body`) would refuse (an
+        unknown key, a value out of its range or not finite, a list of texts given as one text,
+        a centre of mass without 3 components), named; nothing is written.
     """
     path = as_path(path)  # (a path of 5 met a bare 'lstat' TypeError: an API audit, 2026-12-01)
     if not isinstance(comment, str):  # (123 was written, and read_params refused the file it made)
@@ -494,6 +503,8 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
     if coverage is not None and not isinstance(coverage, dict):
         raise TypeError(f"coverage must be a dict or None, got {type(coverage).__name__}")
     data = params_to_dict(params, air)
+    if coverage is None:  # (calibrated:apce_8x6 written to a file lost its warnings beyond its data, stop 102)
+        coverage = set_coverage(params.label)
     if comment:
         data["comment"] = comment
     if body is not None:
@@ -503,6 +514,9 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
             data[BODY_TABLE]["centre_of_mass"] = [float(v) for v in body.centre_of_mass]
         if body.rotor_interference is not None:
             data[BODY_TABLE]["rotor_interference"] = float(body.rotor_interference)
+        # checked as read_body reads it: a centre of mass of 1.5 m (a vehicle file's, fit flight) or NaN, a
+        # rotor_interference of 5 were written, and every reader then refused the file (an audit, stop 102)
+        body_from_dict({BODY_TABLE: data[BODY_TABLE]}, where="body")
     if coverage:
         data[COVERAGE_TABLE] = _coverage_table(coverage)
     with atomic_write(path, "wb") as fh:

@@ -14,6 +14,10 @@ __all__ = ["BODY_TABLE", "COVERAGE_KEYS", "COVERAGE_SINGLE_TEXTS", "COVERAGE_TEX
            "body_from_dict", "check_number", "coverage_from_dict", "short_repr"]
 
 BODY_TABLE = "body"
+#: [m] the largest magnitude of each component of a position: a vehicle file's rotor hubs and centre
+#: of mass, and the ``[body]`` table's fitted centre of mass (which ``fit flight`` writes from the
+#: vehicle file's: the table allowed 1 m until stop 102, and refused the file a fit had written)
+POSITION_MAX = 100.0
 #: the table of what a fitted set's data covered (warnings when the set is used beyond it)
 COVERAGE_TABLE = "coverage"
 COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_min": (0.0, 1e7),
@@ -137,8 +141,8 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
     ------
     ValueError
         A ``[body]`` that is not a table, an unknown key in it, a missing ``drag_area``, or
-        values of the wrong type or out of range (core/body.py; centre_of_mass in [-1, 1] m,
-        rotor_interference in [0, 3]);
+        values of the wrong type or out of range (core/body.py; centre_of_mass in [-100, 100] m,
+        rotor_interference in [0, 3]; comment a str);
         the message starts with ``where``.
     """
     import numpy as np
@@ -160,7 +164,7 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
         raise ValueError(f"{where}: [body]: missing key 'drag_area'")
     vectors = {}
     for key, rng in (("drag_area", (0.0, 10.0, False, False, "m^2")),
-                     ("centre_of_mass", (-1.0, 1.0, False, False, "m"))):
+                     ("centre_of_mass", (-POSITION_MAX, POSITION_MAX, False, False, "m"))):
         if key not in table:
             continue
         value = table[key]
@@ -169,6 +173,8 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
         for k, v in enumerate(value):
             check_number(v, f"[body] {key}[{k}]", where, rng)
         vectors[key] = [float(v) for v in value]
+    if "comment" in table and not isinstance(table["comment"], str):  # (a list was taken, stop 102)
+        raise ValueError(f"{where}: [body] comment must be text, got {short_repr(table['comment'])}")
     if "wash_factor" in table:
         check_number(table["wash_factor"], "[body] wash_factor", where, (0.0, 3.0, False, False, ""))
     drag = BodyDrag(drag_area=tuple(vectors["drag_area"]), wash_factor=float(table.get("wash_factor", 0.0)))

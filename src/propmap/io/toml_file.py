@@ -7,6 +7,7 @@ a regular file only (never a directory, a device or a pipe), at most
 
 from __future__ import annotations
 
+import re
 import tomllib
 from pathlib import Path
 
@@ -35,16 +36,29 @@ def load_toml(path: Path, error: type[ValueError]) -> dict:
     error
         Not a readable regular file, larger than 16 MiB, not UTF-8 (the message gives the
         line), or not valid TOML (the message gives tomllib's line and column; also for
-        arrays nested too deeply and integers of more than 4300 digits).
+        arrays nested too deeply and integers of more than 4300 digits), with that line's
+        text (a key given twice is named so).
     """
     name = show_path(path)
     text = decode_input_text(read_input_bytes(path, error, limit=MAX_SMALL_FILE_BYTES), path, error)
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise error(f"{name}: not valid TOML ({' '.join(str(exc).split())})") from None
+        raise error(f"{name}: not valid TOML ({' '.join(str(exc).split())}){_line_shown(text, str(exc))}") from None
     except RecursionError:
         raise error(f"{name}: not valid TOML (arrays or tables nested too deeply)") from None
     except ValueError as exc:  # int() of a number of more than sys.get_int_max_str_digits() digits
         why = "an integer of more than 4300 digits" if "digits" in str(exc) else " ".join(str(exc).split())[:120]
         raise error(f"{name}: not valid TOML ({why})") from None
+
+
+def _line_shown(text: str, message: str) -> str:
+    """``"; line N: <its text>"`` for tomllib's "(at line N, column M)", so that the key the error is
+    about is named (tomllib's "Cannot overwrite a value" of a key given twice named none: an audit,
+    stop 102); "" where the message gives no line."""
+    found = re.search(r"at line (\d+)", message)
+    lines = text.splitlines()
+    if not found or not 1 <= int(found.group(1)) <= len(lines):
+        return ""
+    shown = " ".join(lines[int(found.group(1)) - 1].split())
+    return f"; line {found.group(1)}: {shown[:60]}{' ...' if len(shown) > 60 else ''}"

@@ -73,6 +73,7 @@ from ..core._numbers import integer
 from ..core.geometry import INCH, Propeller, short_repr
 from ..core.body import BodyDrag
 from ..io.inputs import as_path, short_path, show_path
+from ..io.params_tables import POSITION_MAX  # [m], each component
 from ..io.qprop_file import _qprop_from
 from ..io.toml_file import load_toml
 from ._plausibility import _warn_implausible
@@ -84,7 +85,6 @@ __all__ = ["VehicleFileError", "read_vehicle", "rotor_file_specs"]
 MASS_RANGE = (0.0, 1e4, True)  # [kg]
 GRAVITY_RANGE = (0.0, 100.0, True)  # [m/s^2]
 BODY_AREA_RANGE = (0.0, 100.0, False)  # [m^2]
-POSITION_MAX = 100.0  # [m], each component
 AXIS_LENGTH_RANGE = (1e-6, 1e6)
 ROTOR_INERTIA_RANGE = (0.0, 100.0, False)  # [kg m^2]
 BLADES_RANGE = (1, 100)
