@@ -112,7 +112,9 @@ def test_a_toml_error_names_the_file_and_tomllibs_place(tmp_path):
     path.write_text("cl1 = 5.3\ncl1 = 5.3\n")
     with pytest.raises(ParamsFileError) as exc:
         read_params(path)
-    assert str(exc.value) == f"{path}: not valid TOML (Cannot overwrite a value (at line 2, column 10))"
+    # (with the line's text since stop 102: a key given twice was named by nothing else)
+    assert str(exc.value) == (f"{path}: not valid TOML (Cannot overwrite a value (at line 2, column 10)); "
+                              "line 2: cl1 = 5.3")
 
 
 def test_a_vehicle_file_error_is_the_vehicle_options(tmp_path, capsys):

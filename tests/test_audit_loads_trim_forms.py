@@ -383,7 +383,7 @@ def test_the_airspeed_beyond_a_sets_coverage_is_the_files_largest(tmp_path, caps
     from propmap.io.params_file import write_params
 
     f = tmp_path / "cov.toml"
-    write_params(f, pm.default_params("apce_8x6"))
+    write_params(f, pm.default_params("apce_8x6"), coverage={})  # (none: the set's own is written by default)
     f.write_text(f.read_text() + "\n[coverage]\nairspeed_max = 3.0\n")
     p = _points(tmp_path, "rpm,airspeed,incidence_deg\n6000,0,0\n6000,10,90\n")
     code, _, err = _loads(capsys, "--params", str(f), "--points", str(p), "--out", str(tmp_path / "o.csv"))
@@ -399,7 +399,7 @@ def _set_fitted_5_deg_up(tmp_path, apc8x6):
 
     fitted = theta75_deg(apc8x6) + 5.0
     f = tmp_path / "fitted.toml"
-    write_params(f, pm.default_params("apce_8x6"))
+    write_params(f, pm.default_params("apce_8x6"), coverage={})  # (none: the set's own is written by default)
     f.write_text(f.read_text() + f"\n[coverage]\ndiameter_m = {apc8x6.diameter!r}\nn_blades = 2\n"
                  f"theta75_deg = {fitted!r}\n")
     return f, fitted

@@ -533,7 +533,7 @@ def test_coverage_text_keys_are_checked(tmp_path, bad, match):
     from propmap.io.params_file import ParamsFileError, read_coverage
 
     p = tmp_path / "p.toml"
-    pm.write_params(p, pm.generic_params())
+    pm.write_params(p, pm.generic_params(), coverage={})  # (none: the set's own is written by default)
     p.write_text(p.read_text() + f"\n[coverage]\nJ_max = 0.5\n{bad}\n")
     with pytest.raises((ParamsFileError, ValueError), match=match):
         read_coverage(p)
