@@ -374,7 +374,7 @@ def test_params_from_a_list_and_the_coverage_of_a_file_that_does_not_read(tmp_pa
     bad.write_text("cl1 = = 1\n")
     assert set_coverage(str(bad)) is None
     good = tmp_path / "good.toml"
-    pm.write_params(good, pm.default_params("apce_8x6"))
+    pm.write_params(good, pm.default_params("apce_8x6"), coverage={})
     assert set_coverage(str(good)) is None  # (a file without [coverage]: None as well, by the other branch)
 
 

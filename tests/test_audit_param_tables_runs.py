@@ -129,7 +129,8 @@ def test_coverage_refuses_unknown_keys_infinities_bools_and_quoted_numbers():
 
 
 def test_a_body_table_round_trips_and_its_ranges_are_enforced(tmp_path):
-    """Kills PT10 (a drag_area of 4 numbers read), PT11 (centre_of_mass beyond [-1, 1] m), PT12 (a missing
+    """Kills PT10 (a drag_area of 4 numbers read), PT11 (centre_of_mass beyond [-100, 100] m since stop 102, a
+    vehicle file's range, [-1, 1] m before), PT12 (a missing
     wash_factor read as 1, not 0), PT13 (rotor_interference beyond [0, 3]) and PT14 (a missing drag_area not named)."""
     import numpy as np
 
@@ -150,8 +151,10 @@ def test_a_body_table_round_trips_and_its_ranges_are_enforced(tmp_path):
     assert body.rotor_interference == 0.8
     with pytest.raises(ValueError, match=r"p\.toml: \[body\]: drag_area must be 3 numbers \[m\^2\], got \[0\.1, "):
         _body(drag_area=[0.1, 0.1, 0.1, 0.1])
-    with pytest.raises(ValueError, match=r"\[body\] centre_of_mass\[2\] must be a finite number in \[-1, 1\] m, got 2"):
-        _body(drag_area=[0.1] * 3, centre_of_mass=[0, 0, 2])
+    with pytest.raises(ValueError, match=r"\[body\] centre_of_mass\[2\] must be a finite number in \[-100, 100\] m, "
+                                         r"got 101"):
+        _body(drag_area=[0.1] * 3, centre_of_mass=[0, 0, 101])
+    assert _body(drag_area=[0.1] * 3, centre_of_mass=[0, 0, 100]).centre_of_mass[2] == 100.0
     with pytest.raises(ValueError, match=r"\[body\] rotor_interference must be a finite number in \[0, 3\], got 4"):
         _body(drag_area=[0.1] * 3, rotor_interference=4)
     with pytest.raises(ValueError, match=r"p\.toml: \[body\]: missing key 'drag_area'"):

@@ -70,12 +70,11 @@ def test_a_figure_neither_switches_the_sessions_backend_nor_stays_open(tmp_path)
 def test_an_unknown_mplbackend_is_named_before_the_map_is_built(tmp_path):
     """MPLBACKEND=bogus: the map and its sidecar were written, then the run failed at its figure with
     matplotlib's "Key backend: 'bogus' ..."; now it stops before any work, naming the variable."""
-    exe = Path(sys.executable).with_name("propmap")
     env = dict(os.environ, MPLBACKEND="bogus")
     out = tmp_path / "m.nc"
-    r = subprocess.run([str(exe), "map", "apce_8x6", "--out", str(out), "--rpm", "4000:8000:3", "--airspeed",
-                        "0:15:4", "--incidence-deg", "0:180:7", "--check-points", "0", "--plot", str(tmp_path / "pl")],
-                       env=env, capture_output=True, text=True, timeout=300)
+    r = subprocess.run([sys.executable, "-m", "propmap", "map", "apce_8x6", "--out", str(out), "--rpm", "4000:8000:3",
+                        "--airspeed", "0:15:4", "--incidence-deg", "0:180:7", "--check-points", "0", "--plot",
+                        str(tmp_path / "pl")], env=env, capture_output=True, text=True, timeout=300)
     assert r.returncode == 2
     assert "MPLBACKEND='bogus'" in r.stderr and len(r.stderr.strip().splitlines()) == 1
     assert not out.exists() and not list(tmp_path.iterdir())
@@ -203,15 +202,22 @@ def test_a_body_comment_must_be_text(tmp_path):
 
 def test_a_named_set_written_to_a_file_keeps_its_coverage(tmp_path):
     """write_params of calibrated:apce_8x6 dropped what its data covered: the file's loads beyond 6713 rpm
-    warned of nothing, the set's did."""
+    warned of nothing, the set's did. Only a shipped set, unchanged, carries its own: a set changed without a new
+    label, or one read from a file (whose path may name another file later), carries none (a review)."""
+    import dataclasses
+
     from propmap.io.params_file import read_coverage, read_params, set_coverage, write_params
 
     p = pm.default_params("apce_8x6")
     write_params(tmp_path / "c.toml", p)
     assert read_coverage(tmp_path / "c.toml") == set_coverage("calibrated:apce_8x6")
     assert set_coverage("calibrated:apce_8x6")["rpm_max"] == 6713.0
-    write_params(tmp_path / "d.toml", read_params(tmp_path / "c.toml"))  # a file's copy keeps it too
-    assert read_coverage(tmp_path / "d.toml") == set_coverage("calibrated:apce_8x6")
+    write_params(tmp_path / "g.toml", pm.generic_params())
+    assert read_coverage(tmp_path / "g.toml") == {"J_max": pytest.approx(1.552), "incidence_deg_max": 0.0}
+    for other in (read_params(tmp_path / "c.toml"), dataclasses.replace(p, cl_alpha=2 * p.cl_alpha),
+                  p.replace(collective=0.01)):
+        write_params(tmp_path / "d.toml", other)
+        assert read_coverage(tmp_path / "d.toml") is None
     write_params(tmp_path / "e.toml", p, coverage={})
     assert read_coverage(tmp_path / "e.toml") is None
 
@@ -272,3 +278,28 @@ def test_a_map_stored_in_single_precision_opens(small_map, tmp_path):
         check_dataset(bad)
     with pytest.raises(ValueError, match="speed_of_sound_m_s"):
         check_attributes({**ds.attrs, "speed_of_sound_m_s": 50.0})
+
+
+def test_an_air_a_file_cannot_hold_is_refused_before_writing_or_building(tmp_path):
+    """write_params wrote Air(speed_of_sound=50), which read_params refuses; build_map solved the whole grid, then
+    refused to record that air, hinting at the axes (a review)."""
+    from propmap.io.params_file import write_params
+    from propmap.maps import build_map
+
+    with pytest.raises(ValueError, match=r"w\.toml \(not written\): speed_of_sound must be a finite number in \[100"):
+        write_params(tmp_path / "w.toml", pm.generic_params(), pm.Air(speed_of_sound=50.0))
+    assert not (tmp_path / "w.toml").exists()
+    with pytest.raises(ValueError, match=r"^air: .*speed_of_sound_m_s must be a number in \[100, 10000\] m/s"):
+        build_map(pm.load_propeller("apce_8x6"), pm.generic_params(), np.array([4e3, 6e3]) * RPM, [0.0, 5.0],
+                  [0.0, 1.0], air=pm.Air(speed_of_sound=50.0), n_check=0)
+
+
+def test_a_toml_error_line_shows_control_characters_escaped(tmp_path):
+    from propmap.io.params_file import ParamsFileError, read_params
+
+    f = tmp_path / "esc.toml"
+    f.write_text('section_model = "cambered"\ncl_alpha = 5.0\ncl_alpha = 6.0 # \x1b[31m\x07\n')
+    with pytest.raises(ParamsFileError) as exc:
+        read_params(f)
+    assert "\x1b" not in str(exc.value) and "\x07" not in str(exc.value)
+    assert str(exc.value).endswith(r"line 3: cl_alpha = 6.0 # \x1b[31m\x07")

@@ -29,8 +29,8 @@ from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
 from .core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, Discretization,
                           check_model_args, rotor_loads)
-from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_dataset,
-                          check_propeller)
+from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_attributes,
+                          check_dataset, check_propeller)
 from .io.mapfile import read_sidecar, write_map, write_sidecar
 from .io.provenance import source_digest
 from .io.uncertainty import model_uncertainty
@@ -227,7 +227,9 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         An axis that is not a 1-D array of numbers, has fewer than 2 values, is not
         increasing, or leaves the model's range; more than MAX_NODES (20,000,000) nodes
         (refused before any work); a propeller a map cannot record (diameter outside
-        0.5-100 in, more than 100 blades; io.mapcheck); ``chunk_points`` not an integer
+        0.5-100 in, more than 100 blades; io.mapcheck) or air it cannot (a parameter file's
+        ranges: rho in [0.001, 2000] kg/m^3, mu in (0, 10] Pa s, a speed of sound in [100, 1e4]
+        m/s); ``chunk_points`` not an integer
         in [1, MAX_NODES]; ``n_check`` not an integer in [0, 1,000,000]; ``seed`` not an
         integer >= 0; a scheduler address that cannot be reached within 10 s; once solved, a
         map a file cannot hold (loads beyond the file's limits, |T| up to 1e5 N: the top of
@@ -261,6 +263,11 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         raise ValueError(f"the grid omega x airspeed x incidence has {om.size} x {V.size} x {b.size} = {nodes:,} "
                          f"nodes; at most {MAX_NODES:,}")
     check_propeller(propeller)
+    try:  # (the air a map records, within the ranges of parameter files: refused after the solve until stop 102)
+        check_attributes({"diameter_m": propeller.diameter, "rho_kg_m3": air.rho, "mu_Pa_s": air.mu,
+                          "speed_of_sound_m_s": air.speed_of_sound})
+    except ValueError as exc:
+        raise ValueError(f"air: a map records it within the ranges of a parameter file: {exc}") from None
     _warn_coverage(propeller, params, air, params_label, om, V, b)
     shape = (om.size, V.size, b.size)
     O3, V3, B3 = (a.reshape(-1) for a in np.meshgrid(om, V, b, indexing="ij"))

@@ -497,9 +497,12 @@ def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
             ax.contourf(inc, V, flagged, levels=[0.5, 1.5], colors="none", hatches=["//"])
         ax.set_xlabel("incidence [deg] (0 climb, 90 edgewise, 180 descent)")
         ax.set_ylabel("airspeed V [m/s]")
-    fig.suptitle(f"{title} at {float(row['rpm']):.0f} rpm (hatched: vortex ring, multiple roots or not converged)"
-                 + ("" if static.size else f"; no hover-model panel: the airspeed axis starts at {V.min():g} m/s"),
-                 fontsize=9)
+    # (wrapped to the figure's width, the note on its own line: the three panels' figure cut both, a review)
+    lines = _wrap(f"{title} at {float(row['rpm']):.0f} rpm (hatched: vortex ring, multiple roots or not converged)",
+                  int(12 * fig.get_size_inches()[0]))
+    if not static.size:
+        lines += f"\nno hover-model panel: the airspeed axis starts at {V.min():g} m/s"
+    fig.suptitle(lines, fontsize=9)
     return _save(fig, path)
 
 

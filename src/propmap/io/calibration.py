@@ -35,7 +35,8 @@ from types import MappingProxyType
 from ..core.airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams
 
 __all__ = ["Calibration", "calibration", "generic_params", "generic_without", "calibrated", "default_params",
-           "population", "population_from_dict", "coverage", "params_to_si", "params_from_si", "GENERIC"]
+           "population", "population_from_dict", "coverage", "shipped_coverage", "params_to_si", "params_from_si",
+           "GENERIC"]
 
 #: name of the generic set (``--params generic``)
 GENERIC = "generic"
@@ -99,6 +100,37 @@ def coverage(label: str) -> dict | None:
             return None
         return {**entry["coverage"], **_rpm_span(name)}
     return None
+
+
+def shipped_coverage(params: SectionParams) -> dict | None:
+    """:func:`coverage` of the shipped set ``params`` is: its label's, where the set is that
+    shipped set by value (:meth:`SectionParams.same_section`: its air and label aside).
+
+    What :func:`propmap.io.params_file.write_params` writes by default, so that a shipped set
+    written to a file warns beyond its data as the set does (``calibrated:apce_8x6`` written lost
+    its warnings: an audit, stop 102). A set changed without a new label
+    (``dataclasses.replace``) is not the shipped set and gets None, as does every label that
+    does not name a shipped set (a file's path, Table I, a fit's ``"modified ..."``).
+
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+
+    Returns
+    -------
+    dict or None
+    """
+    label = getattr(params, "label", "") or ""
+    cov = coverage(label)
+    if cov is None:
+        return None
+    if label.startswith("calibrated:"):
+        entry = calibrated(label.split(":", 1)[1])
+        shipped = None if entry is None else entry.params
+    else:
+        sets = [calibration()["generic"]] + [entry for entry, _, _ in calibration()["generic_folds"]]
+        shipped = next((entry.params for entry in sets if entry.name == label), None)
+    return cov if shipped is not None and shipped.same_section(params) else None
 
 
 @functools.lru_cache(maxsize=64)

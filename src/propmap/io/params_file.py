@@ -95,6 +95,7 @@ import difflib
 import functools
 import math
 import os
+import warnings
 from dataclasses import fields
 from pathlib import Path
 
@@ -223,7 +224,7 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
     if unknown:
         shown = ", ".join(short_repr(k, 40) if not k.isidentifier() else k for k in unknown[:5])
         more = f" and {len(unknown) - 5} more" if len(unknown) > 5 else ""
-        known = sorted(set(keys) | set(AIR_KEYS) | set(TEXT_KEYS))
+        known = sorted(set(keys) | set(AIR_KEYS) | set(TEXT_KEYS) | {BODY_TABLE, COVERAGE_TABLE})
         close = difflib.get_close_matches(unknown[0], known, n=1)  # (the valid keys named, an audit, stop 102)
         hint = f": did you mean {close[0]}?" if close else ""
         raise ValueError(f"{where}: unknown key(s) {shown}{more} for section_model {model!r}{hint} (its keys: "
@@ -475,10 +476,11 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         What the data behind a fitted set covered (keys of :data:`COVERAGE_KEYS`, and of
         :data:`COVERAGE_TEXT_KEYS`: the data's label and the groups fitted and held out),
         written as the ``[coverage]`` table: later uses of the file warn beyond it, and
-        ``propmap validate`` labels its groups in-sample or held out. Default (None): the
-        set's own where propmap knows it, :func:`set_coverage` of ``params.label`` (a shipped
-        set's, or the ``[coverage]`` of the file the set was read from), so that the file warns
-        as the set did; ``{}`` writes none.
+        ``propmap validate`` labels its groups in-sample or held out. Default (None): a
+        shipped set's own (``calibrated:<name>``, ``generic``, its folds; where ``params`` is
+        that set by value: :func:`propmap.io.calibration.shipped_coverage`), so that the file
+        warns as the set does; none for any other set (a fit's result, a set read from a file:
+        give its ``coverage``). ``{}`` writes none.
 
     Raises
     ------
@@ -490,9 +492,10 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         AttributeErrors, a user-level audit, 2026-11-30), ``comment`` not a str, ``path``
         not a path.
     ValueError
-        A ``coverage`` or ``body`` that :func:`read_params` (:func:`read_body`) would refuse (an
-        unknown key, a value out of its range or not finite, a list of texts given as one text,
-        a centre of mass without 3 components), named; nothing is written.
+        A file :func:`read_params` (:func:`read_body`) would refuse: a ``coverage`` or ``body``
+        with an unknown key, a value out of its range or not finite, a list of texts given as
+        one text, a centre of mass without 3 components; an ``air`` outside a file's ranges
+        (module docstring); named; nothing is written.
     """
     path = as_path(path)  # (a path of 5 met a bare 'lstat' TypeError: an API audit, 2026-12-01)
     if not isinstance(comment, str):  # (123 was written, and read_params refused the file it made)
@@ -504,7 +507,9 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         raise TypeError(f"coverage must be a dict or None, got {type(coverage).__name__}")
     data = params_to_dict(params, air)
     if coverage is None:  # (calibrated:apce_8x6 written to a file lost its warnings beyond its data, stop 102)
-        coverage = set_coverage(params.label)
+        from .calibration import shipped_coverage
+
+        coverage = shipped_coverage(params)
     if comment:
         data["comment"] = comment
     if body is not None:
@@ -514,11 +519,14 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
             data[BODY_TABLE]["centre_of_mass"] = [float(v) for v in body.centre_of_mass]
         if body.rotor_interference is not None:
             data[BODY_TABLE]["rotor_interference"] = float(body.rotor_interference)
-        # checked as read_body reads it: a centre of mass of 1.5 m (a vehicle file's, fit flight) or NaN, a
-        # rotor_interference of 5 were written, and every reader then refused the file (an audit, stop 102)
-        body_from_dict({BODY_TABLE: data[BODY_TABLE]}, where="body")
     if coverage:
         data[COVERAGE_TABLE] = _coverage_table(coverage)
+    # the whole file checked as read_params reads it: a [body] centre of mass of 1.5 m (a vehicle file's, fit flight)
+    # or NaN, a rotor_interference of 5, an air of 50 m/s sound speed were written, and every reader then refused
+    # the file (an audit and a review, stop 102)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # (what a reader warns of, it says when the file is read)
+        params_from_dict(data, where=f"{show_path(path)} (not written)")
     with atomic_write(path, "wb") as fh:
         tomli_w.dump(data, fh)
 

@@ -61,4 +61,6 @@ def _line_shown(text: str, message: str) -> str:
     if not found or not 1 <= int(found.group(1)) <= len(lines):
         return ""
     shown = " ".join(lines[int(found.group(1)) - 1].split())
-    return f"; line {found.group(1)}: {shown[:60]}{' ...' if len(shown) > 60 else ''}"
+    # (control characters escaped as tomllib's own part escapes them: a terminal would act on them, a review)
+    shown = "".join(c if c.isprintable() else repr(c)[1:-1] for c in shown)
+    return f"; line {found.group(1)}: {shown[:100]}{' ...' if len(shown) > 100 else ''}"
