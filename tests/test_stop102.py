@@ -303,3 +303,13 @@ def test_a_toml_error_line_shows_control_characters_escaped(tmp_path):
         read_params(f)
     assert "\x1b" not in str(exc.value) and "\x07" not in str(exc.value)
     assert str(exc.value).endswith(r"line 3: cl_alpha = 6.0 # \x1b[31m\x07")
+
+
+def test_a_negative_hover_thrust_at_rest_is_not_called_the_windmill_brake(apc8x6):
+    """torque_change_at_constant_thrust said "(a negative thrust: the windmill brake)" of any negative thrust, also
+    of a rotor at rest at -30 deg collective (reverse pitch; a mutation audit)."""
+    from propmap.core.trim import TrimError
+
+    p = pm.default_params("apce_8x6")
+    with pytest.raises(TrimError, match=r"below the least hover makes there, about 2\.12\d* N \(a negative thrust\)$"):
+        pm.torque_change_at_constant_thrust(apc8x6, p, 1200.0, 0.0, 0.0, collective=np.radians(-30.0))
