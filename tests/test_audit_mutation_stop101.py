@@ -281,6 +281,11 @@ def test_air_a_twenty_fifth_of_sea_levels_is_suspected_before_grams(apc8x6, cal)
         with pytest.raises(pm.TrimError, match=r"the air's density is 0.05 kg/m\^3 \(1.225 at sea level\)") as info:
             call()
         assert "grams" not in str(info.value)
+    # at the threshold's edge: just below it the air is suspected, just above it grams (a review)
+    for rho, words in ((0.12, "the air's density is 0.12 kg/m^3"), (0.125, "is the thrust in grams?")):
+        with pytest.raises(pm.TrimError) as info:
+            trim_collective(apc8x6, cal, 6.0, 800.0, air=pm.Air(rho=rho))
+        assert words in str(info.value)
 
 
 def test_a_thrust_50_times_the_most_is_asked_whether_it_is_in_grams(apc8x6, cal):

@@ -210,14 +210,29 @@ def test_a_named_set_written_to_a_file_keeps_its_coverage(tmp_path):
 
     p = pm.default_params("apce_8x6")
     write_params(tmp_path / "c.toml", p)
-    assert read_coverage(tmp_path / "c.toml") == set_coverage("calibrated:apce_8x6")
+    written = read_coverage(tmp_path / "c.toml")
+    assert {k: written[k] for k in set_coverage("calibrated:apce_8x6")} == set_coverage("calibrated:apce_8x6")
     assert set_coverage("calibrated:apce_8x6")["rpm_max"] == 6713.0
+    # with its propeller's blade and Reynolds span, which the label calibrated:apce_8x6 gives the commands (a review:
+    # at 10 km the set warned of its Reynolds numbers, the file did not)
+    from propmap.io.coverage import coverage_warnings
+
+    assert written["propeller"] == "apce_8x6" and written["n_blades"] == 2
+    prop, thin = pm.load_propeller("apce_8x6"), pm.Air.isa(10000.0)
+    said = [coverage_warnings(prop, label, thin, 100.0, 0.5, 0.0, rpm=(4000.0, 5000.0))
+            for label in ("calibrated:apce_8x6", str(tmp_path / "c.toml"))]
+    assert said[0] and [w.replace(str(tmp_path / "c.toml"), "calibrated:apce_8x6") for w in said[1]] == said[0]
     write_params(tmp_path / "g.toml", pm.generic_params())
     assert read_coverage(tmp_path / "g.toml") == {"J_max": pytest.approx(1.552), "incidence_deg_max": 0.0}
-    for other in (read_params(tmp_path / "c.toml"), dataclasses.replace(p, cl_alpha=2 * p.cl_alpha),
-                  p.replace(collective=0.01)):
+    for other in (dataclasses.replace(p, cl_alpha=2 * p.cl_alpha), p.replace(collective=0.01)):
         write_params(tmp_path / "d.toml", other)
         assert read_coverage(tmp_path / "d.toml") is None
+    # a set read from a file and written unchanged keeps that file's table (a second review)
+    write_params(tmp_path / "copy.toml", read_params(tmp_path / "c.toml"))
+    assert read_coverage(tmp_path / "copy.toml") == read_coverage(tmp_path / "c.toml")
+    (tmp_path / "c.toml").write_text((tmp_path / "g.toml").read_text())  # the path now names another set
+    write_params(tmp_path / "copy2.toml", read_params(tmp_path / "copy.toml").replace(label=str(tmp_path / "c.toml")))
+    assert read_coverage(tmp_path / "copy2.toml") is None
     write_params(tmp_path / "e.toml", p, coverage={})
     assert read_coverage(tmp_path / "e.toml") is None
 
@@ -313,3 +328,7 @@ def test_a_negative_hover_thrust_at_rest_is_not_called_the_windmill_brake(apc8x6
     p = pm.default_params("apce_8x6")
     with pytest.raises(TrimError, match=r"below the least hover makes there, about 2\.12\d* N \(a negative thrust\)$"):
         pm.torque_change_at_constant_thrust(apc8x6, p, 1200.0, 0.0, 0.0, collective=np.radians(-30.0))
+    with pytest.raises(TrimError, match=r"\(a negative thrust\)$"):  # edgewise (cos(90 deg) is 6e-17: a review)
+        pm.torque_change_at_constant_thrust(apc8x6, p, 1200.0, 10.0, np.radians(90.0), collective=np.radians(-30.0))
+    with pytest.raises(TrimError, match=r"\(a negative thrust: the windmill brake\)$"):  # a climb's
+        pm.torque_change_at_constant_thrust(apc8x6, p, 800.0, 26.0, 0.0)

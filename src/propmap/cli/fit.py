@@ -11,7 +11,7 @@ import click
 
 from ..core.units import RPM
 from ._air import resolve_air, with_air_options
-from ._common import (Command, InputError, PathArg, _short, theta75_deg, check_section_match, load_params, option_group,
+from ._common import (Command, InputError, PathArg, _short, check_section_match, load_params, option_group,
                        parse_names, warn, with_prop_options)
 from ._coverage import j_max
 from ._load_comparison import _catalogue_comparison, _file_comparison
@@ -163,9 +163,9 @@ def _propeller_keys(prop, omega_min: float, omega_max: float, air) -> dict:
     """The [coverage] keys of the propeller fitted: its name, diameter [m], blade count, blade
     angle at 0.75 R [deg] and the chord Reynolds numbers at 0.75 R of the rates
     ``omega_min``..``omega_max`` [rad/s] in ``air`` (:meth:`Propeller.reynolds_75`)."""
-    re75 = prop.reynolds_75([omega_min, omega_max], air)
-    return {"propeller": prop.name, "diameter_m": prop.diameter, "n_blades": int(prop.n_blades),
-            "theta75_deg": theta75_deg(prop), "re75_min": float(re75[0]), "re75_max": float(re75[1])}
+    from ..io.calibration import propeller_coverage
+
+    return propeller_coverage(prop, omega_min, omega_max, air)
 
 
 def _vehicle_propeller(veh, omega_min: float, omega_max: float, air) -> dict:

@@ -99,7 +99,7 @@ def torque_change_at_constant_thrust(
                                discretization=discretization).thrust
         why = (f"above the most hover makes there, about {np.max(span):.5g} N" if T > np.max(span) else
                f"below the least hover makes there, about {np.min(span):.5g} N"
-               + ("" if T >= 0 else " (a negative thrust: the windmill brake)" if V > 0 and math.cos(b) > 0 else
+               + ("" if T >= 0 else " (a negative thrust: the windmill brake)" if V * math.cos(b) > 1e-9 else
                   " (a negative thrust)"))  # (the windmill brake in a climb only: at rest, reverse pitch; stop 102)
         raise TrimError(f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T:.6g} N "
                         f"in hover at omega={om:.6g} rad/s = {om / RPM:.6g} rpm, the hover reference of operating "

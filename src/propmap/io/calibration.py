@@ -27,16 +27,18 @@ from __future__ import annotations
 
 import functools
 import json
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from importlib import resources
 from types import MappingProxyType
 
 from ..core.airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams
+from ..core.units import RPM
 
 __all__ = ["Calibration", "calibration", "generic_params", "generic_without", "calibrated", "default_params",
-           "population", "population_from_dict", "coverage", "shipped_coverage", "params_to_si", "params_from_si",
-           "GENERIC"]
+           "population", "population_from_dict", "coverage", "propeller_coverage", "shipped_coverage", "params_to_si",
+           "params_from_si", "GENERIC"]
 
 #: name of the generic set (``--params generic``)
 GENERIC = "generic"
@@ -102,9 +104,38 @@ def coverage(label: str) -> dict | None:
     return None
 
 
+def propeller_coverage(prop, omega_min: float, omega_max: float, air: Air) -> dict:
+    """The ``[coverage]`` keys of the propeller behind a set: its name, diameter [m], blade
+    count, blade angle at 0.75 R [deg] and the chord Reynolds numbers at 0.75 R of the rates
+    ``omega_min``..``omega_max`` [rad/s] in ``air`` (:meth:`Propeller.reynolds_75`).
+
+    A load fit writes them (``propmap fit loads``), and :func:`shipped_coverage` for a
+    calibrated set: later runs warn on another propeller or beyond the data's Reynolds numbers.
+
+    Parameters
+    ----------
+    prop : Propeller
+    omega_min, omega_max : float
+        The data's lowest and highest rates [rad/s].
+    air : Air
+        The data's air.
+
+    Returns
+    -------
+    dict
+        ``propeller``, ``diameter_m``, ``n_blades``, ``theta75_deg``, ``re75_min``, ``re75_max``.
+    """
+    re75 = prop.reynolds_75([omega_min, omega_max], air)
+    return {"propeller": prop.name, "diameter_m": prop.diameter, "n_blades": int(prop.n_blades),
+            "theta75_deg": math.degrees(prop.theta_75()), "re75_min": float(re75[0]), "re75_max": float(re75[1])}
+
+
 def shipped_coverage(params: SectionParams) -> dict | None:
     """:func:`coverage` of the shipped set ``params`` is: its label's, where the set is that
-    shipped set by value (:meth:`SectionParams.same_section`: its air and label aside).
+    shipped set by value (:meth:`SectionParams.same_section`: its air and label aside); for a
+    calibrated set with its propeller's keys (:func:`propeller_coverage`: the Reynolds span and
+    the blade, which the commands derive from the label ``calibrated:<name>`` and a file's
+    path does not carry, a review).
 
     What :func:`propmap.io.params_file.write_params` writes by default, so that a shipped set
     written to a file warns beyond its data as the set does (``calibrated:apce_8x6`` written lost
@@ -125,11 +156,19 @@ def shipped_coverage(params: SectionParams) -> dict | None:
     if cov is None:
         return None
     if label.startswith("calibrated:"):
-        entry = calibrated(label.split(":", 1)[1])
-        shipped = None if entry is None else entry.params
-    else:
-        sets = [calibration()["generic"]] + [entry for entry, _, _ in calibration()["generic_folds"]]
-        shipped = next((entry.params for entry in sets if entry.name == label), None)
+        name = label.split(":", 1)[1]
+        entry = calibrated(name)
+        if entry is None or not entry.params.same_section(params):
+            return None
+        from .catalogue import load_propeller
+
+        try:
+            own = load_propeller(name)
+        except (KeyError, ValueError, OSError):
+            return cov
+        return {**cov, **propeller_coverage(own, cov["rpm_min"] * RPM, cov["rpm_max"] * RPM, entry.air)}
+    sets = [calibration()["generic"]] + [entry for entry, _, _ in calibration()["generic_folds"]]
+    shipped = next((entry.params for entry in sets if entry.name == label), None)
     return cov if shipped is not None and shipped.same_section(params) else None
 
 

@@ -478,8 +478,9 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         written as the ``[coverage]`` table: later uses of the file warn beyond it, and
         ``propmap validate`` labels its groups in-sample or held out. Default (None): a
         shipped set's own (``calibrated:<name>``, ``generic``, its folds; where ``params`` is
-        that set by value: :func:`propmap.io.calibration.shipped_coverage`), so that the file
-        warns as the set does; none for any other set (a fit's result, a set read from a file:
+        that set by value: :func:`propmap.io.calibration.shipped_coverage`), or the table of
+        the file the set was read from (its label), where that file still holds this set by
+        value; so that the file warns as the set does. None for any other set (a fit's result:
         give its ``coverage``). ``{}`` writes none.
 
     Raises
@@ -510,6 +511,8 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         from .calibration import shipped_coverage
 
         coverage = shipped_coverage(params)
+        if coverage is None:  # (a fitted file copied through the API lost its table, a review)
+            coverage = _read_set_coverage(params)
     if comment:
         data["comment"] = comment
     if body is not None:
@@ -529,6 +532,22 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         params_from_dict(data, where=f"{show_path(path)} (not written)")
     with atomic_write(path, "wb") as fh:
         tomli_w.dump(data, fh)
+
+
+def _read_set_coverage(params: SectionParams) -> dict | None:
+    """The ``[coverage]`` of the parameter file ``params`` was read from (its label the file's
+    path), where that file still holds this set by value (:meth:`SectionParams.same_section`:
+    a path that names another file now, or a set changed since, gets None); None otherwise."""
+    label = getattr(params, "label", "") or ""
+    if not label or not os.path.isfile(label):
+        return None
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # (the file's warnings were said when it was read)
+            own = read_params(label)
+        return read_coverage(label) if own.same_section(params) else None
+    except (ValueError, OSError):
+        return None
 
 
 def _coverage_table(coverage: dict) -> dict:
