@@ -137,13 +137,15 @@ def _coverage(data, prop, air) -> dict:
     a collective sweep's range of collectives."""
     import numpy as np
 
+    from ..io.calibration import propeller_coverage
+
     n = data.omega / (2 * math.pi)
     # (the largest climb advance ratio; 0 for data all in descent, whose V cos(incidence) is negative)
     return {"J_max": j_max(data.airspeed * np.cos(data.incidence), n, prop.diameter),
             "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
             "rpm_min": float(np.min(data.omega) / RPM), "rpm_max": float(np.max(data.omega) / RPM),
             "airspeed_max": float(np.max(data.airspeed)),
-            **_propeller_keys(prop, float(data.omega.min()), float(data.omega.max()), air),
+            **propeller_coverage(prop, float(data.omega.min()), float(data.omega.max()), air),
             **({} if data.collective is None else {"collective_deg_min": float(np.degrees(np.min(data.collective))),
                                                    "collective_deg_max": float(np.degrees(np.max(data.collective)))})}
 
@@ -159,23 +161,16 @@ def fitted_coverage(train, prop, air, sources, label: str, held) -> dict:
             "held_out": [str(h) for h in held]}
 
 
-def _propeller_keys(prop, omega_min: float, omega_max: float, air) -> dict:
-    """The [coverage] keys of the propeller fitted: its name, diameter [m], blade count, blade
-    angle at 0.75 R [deg] and the chord Reynolds numbers at 0.75 R of the rates
-    ``omega_min``..``omega_max`` [rad/s] in ``air`` (:meth:`Propeller.reynolds_75`)."""
+def _vehicle_propeller(veh, omega_min: float, omega_max: float, air) -> dict:
+    """:func:`propmap.io.calibration.propeller_coverage` of a vehicle's propeller where every
+    rotor carries one geometry; {} where the rotors differ (a flight fit's file ran an 8 in
+    propeller unwarned: a user-level audit, 2026-11-26)."""
     from ..io.calibration import propeller_coverage
 
-    return propeller_coverage(prop, omega_min, omega_max, air)
-
-
-def _vehicle_propeller(veh, omega_min: float, omega_max: float, air) -> dict:
-    """:func:`_propeller_keys` of a vehicle's propeller where every rotor carries one geometry;
-    {} where the rotors differ (a flight fit's file ran an 8 in propeller unwarned: a user-level
-    audit, 2026-11-26)."""
     prop = veh.rotors[0].propeller
     if not all(r.propeller.same_geometry(prop) for r in veh.rotors):
         return {}
-    return _propeller_keys(prop, omega_min, omega_max, air)
+    return propeller_coverage(prop, omega_min, omega_max, air)
 
 
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None,

@@ -150,6 +150,9 @@ def shipped_coverage(params: SectionParams) -> dict | None:
     Returns
     -------
     dict or None
+        :func:`coverage`'s keys (``J_max``, ``incidence_deg_max`` [deg], a calibrated set's
+        ``rpm_min``, ``rpm_max`` [rpm]), with a calibrated set's :func:`propeller_coverage`
+        keys; None where ``params`` is no shipped set.
     """
     label = getattr(params, "label", "") or ""
     cov = coverage(label)
