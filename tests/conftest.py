@@ -12,6 +12,22 @@ from propmap.core.units import RPM  # noqa: F401  (rad/s per rpm, for the tests)
 SHARED = Path(__file__).resolve().parents[2] / "shared" / "data"
 
 
+# variables that every later subprocess of a test process inherits: a test that leaves one changed
+# makes them run elsewhere (a NUMBA_CACHE_DIR left naming a test's empty folder made every later
+# subprocess compile the kernels anew, 70-100 s each: found 2026-12-02)
+_INHERITED = ("NUMBA_CACHE_DIR", "NUMBA_NUM_THREADS", "NUMBA_THREADING_LAYER", "MPLBACKEND", "PYTHONPATH")
+
+
+@pytest.fixture(autouse=True)
+def _environment_left_as_found():
+    before = {k: os.environ.get(k) for k in _INHERITED}
+    yield
+    after = {k: os.environ.get(k) for k in _INHERITED}
+    if after != before:
+        changed = {k: (before[k], after[k]) for k in _INHERITED if before[k] != after[k]}
+        pytest.fail(f"the test left the environment changed (before, after): {changed}")
+
+
 @pytest.fixture(scope="session")
 def shared_data() -> Path:
     if not SHARED.is_dir():

@@ -142,7 +142,11 @@ def test_a_cache_folder_others_may_write_is_not_used(tmp_path, monkeypatch):
     one: numba's package-folder and user-cache locators find no place."""
     for c in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
         monkeypatch.setattr(c, "from_function", classmethod(lambda cls, f, p: None))
-    monkeypatch.delenv("NUMBA_CACHE_DIR", raising=False)
+    # set, then deleted, so that monkeypatch restores the variable's absence: _writable_cache sets it itself,
+    # and a folder left in this process' environment made every later subprocess compile the kernels anew
+    # (tests/conftest.py checks that no test leaves it changed)
+    monkeypatch.setenv("NUMBA_CACHE_DIR", "")
+    monkeypatch.delenv("NUMBA_CACHE_DIR")
     monkeypatch.setattr(numba.config, "CACHE_DIR", "")
     monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
     named = tmp_path / f"propmap-numba-{os.getuid()}"
