@@ -12,6 +12,13 @@ from propmap.core.units import RPM  # noqa: F401  (rad/s per rpm, for the tests)
 SHARED = Path(__file__).resolve().parents[2] / "shared" / "data"
 
 
+def pytest_sessionstart(session):
+    """Under pytest-xdist, the kernels' first compile shared among the workers (tests/kernel_warmup.py)."""
+    from kernel_warmup import maybe_warm
+
+    maybe_warm(session.config)
+
+
 # variables that every later subprocess of a test process inherits: a test that leaves one changed
 # makes them run elsewhere (a NUMBA_CACHE_DIR left naming a test's empty folder made every later
 # subprocess compile the kernels anew, 70-100 s each: found 2026-12-02)
