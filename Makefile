@@ -22,8 +22,8 @@ demo: $(STAMP)
 NUMBA_CACHE := find src -name '*.nbi' -o -name '*.nbc'
 
 # the suite in parallel processes, one per logical CPU, at most 4 (pytest-xdist): the kernels'
-# first compile is most of a fresh checkout's time, and each worker compiles what it needs
-# before another has cached it (benchmarks/README.md, Compile time)
+# first compile is much of a fresh checkout's time; the workers share it out before they collect
+# (tests/kernel_warmup.py; benchmarks/README.md, Compile time)
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n logical --maxprocesses 4
 

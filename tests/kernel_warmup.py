@@ -5,14 +5,14 @@ both workers compiled the serial loads kernel at once, then whichever kernel the
 first (benchmarks/README.md, Compile time). Here the workers, before they collect a test,
 share the kernel families out (each family's first call, which numba then writes to the
 package's cache): a worker takes the first family that no other has taken and whose
-dependencies are compiled, until none is left, then waits for the others'; every later first
-call, in any worker, loads the kernel from the cache instead of compiling it. With a warm cache each family takes a
+dependencies are compiled, until every family is taken; every later first call, in any worker,
+loads the kernel from the cache instead of compiling it. With a warm cache each family takes a
 fraction of a second. Without pytest-xdist (one process) nothing is done here: the tests compile
 what they need as they go.
 
 A family that fails here (it cannot: these are the calls the tests make) is left to the tests,
-which then compile it themselves and report the failure; a worker that does not say it is done
-within ``WAIT_S`` is not waited for any longer.
+which then compile it themselves and report the failure; a family whose dependencies are not
+compiled within ``WAIT_S`` (a worker that died) is left to the tests too.
 """
 
 from __future__ import annotations
@@ -93,7 +93,9 @@ def _has(folder: Path, name: str, state: str) -> bool:
 
 def warm(folder: Path, wait_s: float = WAIT_S) -> list[str]:
     """Compile, in this worker, each family of ``FAMILIES`` that no other worker of the run has
-    claimed and whose dependencies are compiled, until none is left; then wait for the others'.
+    claimed and whose dependencies are compiled, until every family is claimed: then the worker
+    goes on to its tests (the last families may still compile elsewhere; a test that needs one
+    of them first compiles it too, which costs no more than waiting for it).
 
     The workers share ``folder``: a family is claimed by the file ``<name>.claimed`` (created
     exclusively) and said compiled by ``<name>.done``. Returns the names of the families that
@@ -121,8 +123,6 @@ def warm(folder: Path, wait_s: float = WAIT_S) -> list[str]:
             except Exception:  # noqa: BLE001 (the tests meet it again and report it)
                 failed.append(name)
             _mark(folder, name, "done")
-    while time.monotonic() < end and not all(_has(folder, f[0], "done") for f in FAMILIES):
-        time.sleep(0.2)
     return failed
 
 
