@@ -5,14 +5,15 @@ both workers compiled the serial loads kernel at once, then whichever kernel the
 first (benchmarks/README.md, Compile time). Here the workers, before they collect a test,
 share the kernel families out (each family's first call, which numba then writes to the
 package's cache): a worker takes the first family that no other has taken and whose
-dependencies are compiled, until every family is taken; every later first call, in any worker,
-loads the kernel from the cache instead of compiling it. With a warm cache each family takes a
+dependencies are compiled, until every family is taken, then goes on to its tests; a first call
+in any worker then loads the kernel from the cache (or, for the last families, which may still
+be compiling in another worker, compiles it as well). With a warm cache each family takes a
 fraction of a second. Without pytest-xdist (one process) nothing is done here: the tests compile
 what they need as they go.
 
 A family that fails here (it cannot: these are the calls the tests make) is left to the tests,
-which then compile it themselves and report the failure; a family whose dependencies are not
-compiled within ``WAIT_S`` (a worker that died) is left to the tests too.
+which then compile it themselves and report the failure; so is a family whose claimer died
+before it was compiled, and one whose dependencies are not settled within ``WAIT_S``.
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-WAIT_S = 900.0
+WAIT_S = 600.0
 
 
 def _points(n):
@@ -78,28 +79,51 @@ FAMILIES = (
 )
 
 
-def _mark(folder: Path, name: str, state: str) -> bool:
-    """Create ``folder/<family>.<state>`` if it does not exist yet; False if another worker had."""
+def _path(folder: Path, name: str, state: str) -> Path:
+    return folder / f"{name.replace(' ', '_')}.{state}"
+
+
+def _claim(folder: Path, name: str) -> bool:
+    """Create ``<family>.claimed`` holding this process' id; False if another worker had."""
     try:
-        os.close(os.open(folder / f"{name.replace(' ', '_')}.{state}", os.O_CREAT | os.O_EXCL | os.O_WRONLY))
-        return True
+        fd = os.open(_path(folder, name, "claimed"), os.O_CREAT | os.O_EXCL | os.O_WRONLY)
     except FileExistsError:
         return False
+    with os.fdopen(fd, "w") as f:
+        f.write(str(os.getpid()))
+    return True
 
 
-def _has(folder: Path, name: str, state: str) -> bool:
-    return (folder / f"{name.replace(' ', '_')}.{state}").exists()
+def _settled(folder: Path, name: str) -> bool:
+    """The family is compiled (``<family>.done``), or its claimer died before it was: a worker that
+    dies mid-compile leaves its family to the tests, not to a wait of ``WAIT_S``."""
+    if _path(folder, name, "done").exists():
+        return True
+    try:
+        pid = int(_path(folder, name, "claimed").read_text() or "0")
+    except (OSError, ValueError):
+        return False
+    if pid <= 0:  # claimed a moment ago, its id not yet written
+        return False
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return True
+    except PermissionError:  # another user's process of that id: alive
+        return False
+    return False
 
 
 def warm(folder: Path, wait_s: float = WAIT_S) -> list[str]:
     """Compile, in this worker, each family of ``FAMILIES`` that no other worker of the run has
-    claimed and whose dependencies are compiled, until every family is claimed: then the worker
+    claimed and whose dependencies are settled, until every family is claimed: then the worker
     goes on to its tests (the last families may still compile elsewhere; a test that needs one
     of them first compiles it too, which costs no more than waiting for it).
 
     The workers share ``folder``: a family is claimed by the file ``<name>.claimed`` (created
-    exclusively) and said compiled by ``<name>.done``. Returns the names of the families that
-    failed here (left to the tests)."""
+    exclusively, holding the claimer's process id) and said compiled by ``<name>.done``; a
+    dependency is settled when it is done or its claimer has died. Waits at most ``wait_s`` [s]
+    for dependencies. Returns the names of the families that failed here (left to the tests)."""
     folder.mkdir(parents=True, exist_ok=True)
     failed = []
     end = time.monotonic() + wait_s
@@ -108,30 +132,32 @@ def warm(folder: Path, wait_s: float = WAIT_S) -> list[str]:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         while time.monotonic() < end:
-            free = [f for f in FAMILIES if not _has(folder, f[0], "claimed")]
+            free = [f for f in FAMILIES if not _path(folder, f[0], "claimed").exists()]
             if not free:
                 break
-            ready = [f for f in free if all(_has(folder, d, "done") for d in f[2])]
+            ready = [f for f in free if all(_settled(folder, d) for d in f[2])]
             if not ready:
                 time.sleep(0.2)
                 continue
             name, call, _ = ready[0]
-            if not _mark(folder, name, "claimed"):
+            if not _claim(folder, name):
                 continue
             try:
                 call()
             except Exception:  # noqa: BLE001 (the tests meet it again and report it)
                 failed.append(name)
-            _mark(folder, name, "done")
+            _path(folder, name, "done").touch()
     return failed
 
 
-def maybe_warm(config) -> None:
-    """``warm`` in a pytest-xdist worker (``config.workerinput`` is set there), nothing elsewhere."""
+def maybe_warm(config) -> list[str] | None:
+    """``warm`` in a pytest-xdist worker (``config.workerinput`` is set there), nothing elsewhere
+    or with ``--collect-only``. Every family is compiled whatever tests are selected (with a warm
+    cache, a second or two). Returns ``warm``'s failures, None where it did not run."""
     info = getattr(config, "workerinput", None)
-    if info is None:
-        return
+    if info is None or config.option.collectonly:
+        return None
     # the workers' temporary folders are <run's folder>/popen-gw<k>; the run's own id where they are not
     base = config.option.basetemp
     folder = (Path(base).parent if base else Path(tempfile.gettempdir())) / f"kernel-warmup-{info['testrunuid']}"
-    warm(folder)
+    return warm(folder)
