@@ -27,6 +27,7 @@ import propmap as pm
 from propmap.core.units import RPM
 
 from .cli_helpers import one_line_error, run
+from .test_stop102 import _map_ds  # the hand-made one-rpm map of stop 102's own tests
 
 
 @pytest.fixture
@@ -49,19 +50,6 @@ def no_matplotlib(monkeypatch):
         raise ValueError("the environment variable MPLBACKEND='bogus' is not a matplotlib backend")
 
     monkeypatch.setattr(plots, "require_matplotlib", refuse)
-
-
-def _map_ds(V, inc=(0.0, 90.0)):
-    """A hand-made one-rpm map dataset: thrust falling with airspeed (rpm, airspeed, incidence)."""
-    import xarray as xr
-
-    V, inc = np.asarray(V, float), np.asarray(inc, float)
-    thrust = 4.0 - 0.2 * V[None, :, None] * (1 + 0 * inc[None, None, :])
-    dims = ("rpm", "airspeed", "incidence_deg")
-    flags = np.zeros_like(thrust, bool)
-    return xr.Dataset({"thrust": (dims, thrust), "drag": (dims, thrust / 10), "torque": (dims, thrust / 100),
-                       "vortex_ring": (dims, flags), "multiple_roots": (dims, flags), "converged": (dims, ~flags)},
-                      coords={"rpm": [6000.0], "airspeed": V, "incidence_deg": inc})
 
 
 # ---- plots.py --------------------------------------------------------------------------------------------------------
