@@ -153,7 +153,7 @@ def warm(folder: Path, wait_s: float = WAIT_S) -> list[str]:
 def maybe_warm(config) -> list[str] | None:
     """``warm`` in a pytest-xdist worker (``config.workerinput`` is set there), nothing elsewhere
     or with ``--collect-only``. Every family is compiled whatever tests are selected (with a warm
-    cache, a second or two). Returns ``warm``'s failures, None where it did not run."""
+    cache, 3.8 s for all eight in one process, 2026-12-02). Returns ``warm``'s failures, None where it did not run."""
     info = getattr(config, "workerinput", None)
     if info is None or config.option.collectonly:
         return None
