@@ -542,10 +542,11 @@ def _read_set_coverage(params: SectionParams) -> dict | None:
     if not label or not os.path.isfile(label):
         return None
     try:
-        with warnings.catch_warnings():
+        path = as_path(label)
+        with warnings.catch_warnings(), _reading(path) as data:  # (parsed once for the set and its table)
             warnings.simplefilter("ignore")  # (the file's warnings were said when it was read)
-            own = read_params(label)
-        return read_coverage(label) if own.same_section(params) else None
+            own = params_from_dict(data, where=show_path(path), label=label, fill=True)
+            return coverage_from_dict(data, where=show_path(path)) if own.same_section(params) else None
     except (ValueError, OSError):
         return None
 
