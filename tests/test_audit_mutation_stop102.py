@@ -28,6 +28,7 @@ from propmap.core.units import RPM
 
 from .cli_helpers import one_line_error, run
 from .test_stop102 import _map_ds  # the hand-made one-rpm map of stop 102's own tests
+import propmap.plots_flight as plots_flight
 
 
 @pytest.fixture
@@ -57,7 +58,7 @@ def no_matplotlib(monkeypatch):
 def test_a_plot_function_names_an_unknown_mplbackend():
     """Kills plots.py:53 (``_figure`` without its ``require_matplotlib()``): a plot function called with
     MPLBACKEND=bogus raised matplotlib's own "Key backend: 'bogus'" instead of naming the variable."""
-    code = ("import numpy as np\nimport propmap.plots as p\ntry:\n"
+    code = ("import numpy as np\nimport propmap.plots_flight as p\ntry:\n"
             "    p.plot_flight_speed([1.0, 2.0], {k: np.ones(2) for k in ('thrust', 'drag', 'torque')},\n"
             "                        {k: np.ones(2) for k in ('thrust', 'drag', 'torque')}, {'m': np.zeros(2)},\n"
             "                        'never.png')\nexcept ValueError as e:\n    print(e)\n")
@@ -115,7 +116,7 @@ def test_the_speed_figure_refuses_no_samples(drawn, tmp_path):
     plots, _ = drawn
     loads = {k: np.ones(0) for k in ("thrust", "drag", "torque")}
     with pytest.raises(ValueError, match="got 0 samples, 0 of them not finite"):
-        plots.plot_flight_speed([], loads, loads, {"m": np.zeros(0)}, tmp_path / "s.png")
+        plots_flight.plot_flight_speed([], loads, loads, {"m": np.zeros(0)}, tmp_path / "s.png")
 
 
 # ---- io/calibration.py: shipped_coverage, propeller_coverage ---------------------------------------------------------
@@ -416,7 +417,6 @@ def test_fit_flights_speed_figure_takes_the_hover_models_vertical_force_for_the_
     ``hover["thrust"]``, not its body-z component ``hover["vertical"]``): with a rotor tilted 20 deg the error
     drawn was off by T (1 - cos 20 deg)."""
     import propmap.identify.flight as identify_flight
-    from propmap import plots
     from propmap.cli.flight import _figures, _hover_loads
 
     tilt = np.radians(20.0)
@@ -432,8 +432,8 @@ def test_fit_flights_speed_figure_takes_the_hover_models_vertical_force_for_the_
     pred = SimpleNamespace(force=force + 0.1, loads=[one, one])
     seen = {}
     monkeypatch.setattr(identify_flight, "baseline_force", lambda *args: np.zeros((n, 3)))
-    monkeypatch.setattr(plots, "plot_flight_timeseries", lambda *args, **kw: None)
-    monkeypatch.setattr(plots, "plot_flight_speed", lambda speed, loads, hover, vertical, path, **kw:
+    monkeypatch.setattr(plots_flight, "plot_flight_timeseries", lambda *args, **kw: None)
+    monkeypatch.setattr(plots_flight, "plot_flight_speed", lambda speed, loads, hover, vertical, path, **kw:
                         seen.update(hover=hover, vertical=vertical))
     key = identify_flight.BASELINES[-1][0]
     _figures(samples, ["log"], set(), pred, {key: {}}, veh, apc_params, pm.Air(), "v.toml")(tmp_path / "f.png")

@@ -12,6 +12,7 @@ import pytest
 
 from propmap.core.units import RPM_MAX
 from propmap.io.readers import MeasurementFileError, looks_like_uiuc, read_uiuc_static, read_uiuc_sweep
+import propmap.plots_flight as plots_flight
 
 #: the UIUC vol. 1 files the package bundles (src/propmap/data/uiuc_v1; Brandt & Selig, AIAA 2011-1255)
 UIUC = Path(str(resources.files("propmap") / "data" / "uiuc_v1"))
@@ -256,7 +257,7 @@ def test_plot_flight_timeseries_draws_each_axis_of_measured_predicted_and_others
     meas = {k: np.array([[1.0, 2.0, -9.0], [1.5, 2.5, -9.5]]) for k in t}
     pred = {k: np.array([[1.1, 2.1, -9.1], [1.4, 2.4, -9.4]]) for k in t}
     other = {"k Omega^2": {"a": pred["a"] * 2}}
-    plots.plot_flight_timeseries(t, meas, pred, tmp_path / "f.png", title="x", other=other)
+    plots_flight.plot_flight_timeseries(t, meas, pred, tmp_path / "f.png", title="x", other=other)
     axes = figs[0].axes  # 3 rows x 2 columns, row-major
     z_a = {ln[0]: ln for ln in _lines(axes[4])}
     assert list(z_a["measured m a"][2]) == [-9.0, -9.5] and list(z_a["propmap"][2]) == [-9.1, -9.4]
@@ -274,7 +275,7 @@ def test_plot_flight_speed_bins_medians_of_three_samples_or_more_per_metre_per_s
     model = np.array([1.0, 2.0, 9.0, 5.0, 5.0, 7.0, 1.0, 2.0, 3.0])
     hover = -model
     loads = {"thrust": model, "drag": model, "torque": model}
-    plots.plot_flight_speed(speed, loads, {k: hover for k in loads}, {"fitted": model, "k Omega^2": hover},
+    plots_flight.plot_flight_speed(speed, loads, {k: hover for k in loads}, {"fitted": model, "k Omega^2": hover},
                             tmp_path / "s.png")
     thrust = figs[0].axes[0]
     fitted, hov = _lines(thrust)[:2]
@@ -368,7 +369,7 @@ def test_plot_level_flight_fit_draws_pitch_in_degrees_and_the_hover_error(drawn,
     """Mutants P33 (pitch in rad under a [deg] axis) and P34 (the hover model's error T_h + weight)."""
     from types import SimpleNamespace
 
-    from propmap.plots import plot_level_flight_fit
+    from propmap.plots_flight import plot_level_flight_fit
 
     _, figs = drawn
     data = SimpleNamespace(airspeed=np.array([8.0, 2.0]), pitch=np.radians([-20.0, -5.0]))

@@ -15,6 +15,7 @@ import pytest
 
 import propmap as pm
 from propmap.core.units import RPM
+import propmap.plots_flight as plots_flight
 
 
 def _map_ds(V, inc=(0.0, 90.0)):
@@ -145,7 +146,7 @@ def test_envelope_and_speed_figures_refuse_nothing_to_draw(drawn, tmp_path):
         plots.plot_envelope(pd.DataFrame({c: [1.0] for c in cols if c != "drag"}), tmp_path / "e.png")
     loads = {k: np.ones(3) for k in ("thrust", "drag", "torque")}
     with pytest.raises(ValueError, match="1 of them not finite"):
-        plots.plot_flight_speed([1.0, np.nan, 2.0], loads, loads, {"m": np.zeros(3)}, tmp_path / "s.png")
+        plots_flight.plot_flight_speed([1.0, np.nan, 2.0], loads, loads, {"m": np.zeros(3)}, tmp_path / "s.png")
 
 
 def test_the_speed_figures_hover_thrust_is_along_each_rotor_axis(apc8x6, apc_params):

@@ -20,7 +20,7 @@ KNOWN_CYCLES = []
 #: layers: a module may import its own layer and those below it
 LAYERS = {"core": 0, "io": 1, "cli": 3, "__main__": 3}
 LEAVES = {"vehicle": {"identify", "maps", "rotormap", "mapresults", "export_c", "simexport", "validation", "cases",
-                       "cases_gill2019", "plots"}}
+                       "cases_gill2019", "plots", "plots_flight"}}
 
 
 def _modules() -> dict[str, tuple[Path, bool]]:

@@ -2,7 +2,8 @@
 
 Each figure is drawn on its own Agg canvas, not through ``matplotlib.pyplot``: drawing one
 neither selects nor changes the session's backend and leaves no figure open, also where the
-drawing or the writing fails.
+drawing or the writing fails. A figure's format is its file's extension (.png, .pdf, .svg).
+The flight figures are in :mod:`propmap.plots_flight`.
 """
 
 from __future__ import annotations
@@ -14,8 +15,8 @@ import numpy as np
 
 from .io.atomic import atomic_write
 
-__all__ = ["require_matplotlib", "plot_validation", "plot_envelope", "plot_cv_summary", "plot_cases",
-           "plot_flight_timeseries", "plot_flight_speed"]
+__all__ = ["require_matplotlib", "plot_validation", "plot_envelope", "plot_load_fit", "plot_load_parity",
+           "plot_cv_summary", "plot_cases", "plot_map_contours"]
 
 
 def require_matplotlib():
@@ -64,15 +65,24 @@ def _colors() -> list:
     return require_matplotlib().rcParams["axes.prop_cycle"].by_key()["color"]
 
 
-#: figure formats by file extension (anything else is written as PNG)
+#: figure formats by file extension (any other is refused)
 FIGURE_FORMATS = ("png", "pdf", "svg")
+
+
+def _format(path) -> str:
+    """The figure format of ``path`` by its extension; ValueError for an extension that is not
+    one of :data:`FIGURE_FORMATS` (a ``.jpg`` got PNG bytes under its name until stop 104)."""
+    fmt = Path(path).suffix.lower().lstrip(".")
+    if fmt not in FIGURE_FORMATS:
+        raise ValueError(f"path {str(path)!r:.200}: a figure's extension gives its format, one of "
+                         f"{', '.join('.' + f for f in FIGURE_FORMATS)}; got {('.' + fmt) if fmt else 'none'}")
+    return fmt
 
 
 def _save(fig, path) -> Path:
     path = Path(path)
-    fmt = path.suffix.lower().lstrip(".")
     with atomic_write(path, "wb") as fh:
-        fig.savefig(fh, format=fmt if fmt in FIGURE_FORMATS else "png", dpi=120)
+        fig.savefig(fh, format=_format(path), dpi=120)
     return path
 
 
@@ -88,8 +98,8 @@ def plot_validation(validation, path, *, title: str = "") -> Path:
         :func:`propmap.validation.validate`'s result: each run's J, measured and modelled
         CT and CP, the hover model's CT and CP, the propeller's name and the data's citation.
     path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
+        Figure file, written atomically; its extension gives the format: ``.png``, ``.pdf``
+        or ``.svg`` (in any case; another is refused).
     title : str
         Default ``"<propeller>: model vs measured"``; the data's citation is added below it
         unless it holds ``"Data:"``.
@@ -98,7 +108,14 @@ def plot_validation(validation, path, *, title: str = "") -> Path:
     -------
     Path
         ``path``.
+
+    Raises
+    ------
+    ValueError
+        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
+        drawing).
     """
+    _format(path)
     fig, axes = _figure(1, 2, (11, 4.2))
     colors = _colors()
     for k, run in enumerate(validation.runs):
@@ -138,8 +155,8 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
         one curve per incidence, the hover-model error in % of the largest
         ``|thrust_hover|``.
     path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
+        Figure file, written atomically; its extension gives the format: ``.png``, ``.pdf``
+        or ``.svg`` (in any case; another is refused).
     title : str
 
     Returns
@@ -150,8 +167,10 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
     Raises
     ------
     ValueError
-        Where a column is missing or no row has a finite thrust (nothing to draw).
+        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
+        drawing), or where a column is missing or no row has a finite thrust (nothing to draw).
     """
+    _format(path)
     missing = [c for c in ("airspeed", "incidence_deg", "thrust", "drag", "thrust_hover") if c not in table]
     if missing:
         raise ValueError(f"table: no column {', '.join(missing)} (plot_envelope draws propmap demo's envelope table)")
@@ -176,59 +195,6 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
     return _save(fig, path)
 
 
-def plot_level_flight_fit(data, forces, hover_vertical, weight, path, *, title: str = "") -> Path:
-    """Like Fig. 6 of Gill & D'Andrea (2017): the model (BET+BEMT) against speed, the hover
-    model beside it where it has a value (rotor drag 0, the vertical-force error).
-
-    Panels: collective thrust, collective drag, sum of |torque|, vertical-force error
-    (eq 17; the ground truth is 0), pitch.
-
-    Parameters
-    ----------
-    data : LevelFlightData
-        The level-flight samples: ``airspeed`` [m/s] and ``pitch`` [rad], shape (N,).
-    forces : dict
-        ``level_flight_forces``' result: ``"thrust"``, ``"drag"`` [N] and ``"torque"`` [N m],
-        shape (N, n_rotors), and ``"vertical"`` [N], shape (N,).
-    hover_vertical : array_like, shape (N,)
-        The hover model's vertical force [N].
-    weight : float or array_like, shape (N,)
-        The vehicle's weight [N].
-    path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
-    title : str
-
-    Returns
-    -------
-    Path
-        ``path``.
-    """
-    V = data.airspeed
-    o = np.argsort(V)
-    fig, axes = _figure(1, 5, (17, 3.6))
-    T_h = hover_vertical  # hover thrust is vertical-only in level flight up to the tilt
-    axes[0].plot(V[o], forces["thrust"].sum(1)[o], "o-", ms=3, label="BET+BEMT")
-    axes[0].set_ylabel("collective thrust [N]")
-    axes[1].plot(V[o], forces["drag"].sum(1)[o], "o-", ms=3)
-    axes[1].axhline(0, color="k", ls="--", lw=1)
-    axes[1].set_ylabel("collective rotor drag [N] (hover: 0)")
-    axes[2].plot(V[o], np.abs(forces["torque"]).sum(1)[o], "o-", ms=3)
-    axes[2].set_ylabel("sum |torque| [N m]")
-    axes[3].plot(V[o], (forces["vertical"] - weight)[o], "o-", ms=3, label="BET+BEMT")
-    axes[3].plot(V[o], (T_h - weight)[o], "s--", ms=3, label="hover model")
-    axes[3].axhline(0, color="r", lw=1, label="ground truth")
-    axes[3].set_ylabel("vertical force error (eq 17) [N]")
-    axes[3].legend(fontsize=7)
-    axes[4].plot(V[o], np.degrees(data.pitch)[o], "o-", ms=3)
-    axes[4].set_ylabel("pitch [deg]")
-    for ax in axes:
-        ax.set_xlabel("V [m/s]")
-        ax.grid(alpha=0.3)
-    fig.suptitle(title, fontsize=9)
-    return _save(fig, path)
-
-
 def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
                   baseline_label: str = "Table I") -> Path:
     """Like Fig. 7 of Gill & D'Andrea (2017) for a load fit: CT and CP vs J, measured
@@ -243,8 +209,8 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
     holdout : set of str
         The run ids held out of the fit (drawn with open markers).
     path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
+        Figure file, written atomically; its extension gives the format: ``.png``, ``.pdf``
+        or ``.svg`` (in any case; another is refused).
     title : str
     baseline_label : str
         The baseline parameters' name in the legend.
@@ -253,7 +219,14 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
     -------
     Path
         ``path``.
+
+    Raises
+    ------
+    ValueError
+        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
+        drawing).
     """
+    _format(path)
     fig, axes = _figure(1, 2, (11, 4.2))
     colors = _colors()
     for k, (rf, rb) in enumerate(zip(runs_fitted, runs_baseline)):
@@ -292,15 +265,22 @@ def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> 
     held_mask : array_like of bool, shape (N,)
         The points held out of the fit.
     path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
+        Figure file, written atomically; its extension gives the format: ``.png``, ``.pdf``
+        or ``.svg`` (in any case; another is refused).
     title : str
 
     Returns
     -------
     Path
         ``path``.
+
+    Raises
+    ------
+    ValueError
+        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
+        drawing).
     """
+    _format(path)
     keys = list(data.measured)
     fig, axes = _figure(1, len(keys), (4.5 * len(keys), 4), squeeze=False)
     units = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
@@ -333,8 +313,8 @@ def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
         ``rms_cp`` (fractions) of that key in every row of ``propellers``; a row without the
         key, or with None there (a propeller the protocol did not score), is left out.
     path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
+        Figure file, written atomically; its extension gives the format: ``.png``, ``.pdf``
+        or ``.svg`` (in any case; another is refused).
     title : str
         Default: the number of propellers and the citations of the UIUC volumes and APC's
         geometry.
@@ -343,7 +323,14 @@ def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
     -------
     Path
         ``path``.
+
+    Raises
+    ------
+    ValueError
+        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
+        drawing).
     """
+    _format(path)
     require_matplotlib()
     from matplotlib import ticker
 
@@ -390,14 +377,21 @@ def plot_cases(cases: dict, path) -> Path:
         ``"beaver"`` and ``"gill2019"`` are drawn (a panel left empty where one is absent),
         other keys ignored.
     path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
+        Figure file, written atomically; its extension gives the format: ``.png``, ``.pdf``
+        or ``.svg`` (in any case; another is refused).
 
     Returns
     -------
     Path
         ``path``.
+
+    Raises
+    ------
+    ValueError
+        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
+        drawing).
     """
+    _format(path)
     fig, axes = _figure(1, 5, (21, 4.2))
     a = cases.get("apc10x7e")
     if a is not None:
@@ -458,8 +452,8 @@ def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
     rpm : float
         [rpm]; the nearest grid row is drawn.
     path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
+        Figure file, written atomically; its extension gives the format: ``.png``, ``.pdf``
+        or ``.svg`` (in any case; another is refused).
     title : str
 
     Returns
@@ -470,8 +464,10 @@ def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
     Raises
     ------
     ValueError
-        Where the map has fewer than two airspeed or incidence nodes (no contour to draw).
+        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
+        drawing), or where the map has fewer than two airspeed or incidence nodes (no contour to draw).
     """
+    _format(path)
     row = ds.sel(rpm=rpm, method="nearest")
     V = row["airspeed"].values
     inc = row["incidence_deg"].values
@@ -503,118 +499,4 @@ def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
     if not static.size:
         lines += f"\nno hover-model panel: the airspeed axis starts at {V.min():g} m/s"
     fig.suptitle(lines, fontsize=9)
-    return _save(fig, path)
-
-
-def plot_flight_timeseries(t_by_log: dict, measured: dict, predicted: dict, path, *, title: str = "",
-                           other: dict | None = None) -> Path:
-    """Measured against predicted body force over time, one column per log, one row per axis.
-
-    ``t_by_log``, ``measured``, ``predicted``: log name -> time [s] (N,), force [N] (N, 3);
-    ``other``: optional label -> {log name -> force (N, 3)} drawn thin (baselines, references).
-
-    Parameters
-    ----------
-    t_by_log : dict
-        Log name -> sample times [s], shape (N,) (N per log); its order gives the columns.
-    measured, predicted : dict
-        Log name -> body force [N], shape (N, 3) (x, y, z), for every log of ``t_by_log``.
-    path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
-    title : str
-    other : dict, optional
-        Label -> {log name -> body force [N], shape (N, 3)}; a log it lacks is skipped.
-
-    Returns
-    -------
-    Path
-        ``path``.
-    """
-    names = list(t_by_log)
-    fig, axes = _figure(3, len(names), (4.2 * len(names), 7), squeeze=False, sharey="row")
-    for j, name in enumerate(names):
-        t = t_by_log[name]
-        for k, axis in enumerate("xyz"):
-            ax = axes[k, j]
-            ax.plot(t, measured[name][:, k], color="k", lw=1.0, label="measured m a")
-            ax.plot(t, predicted[name][:, k], color="C0", lw=1.0, label="propmap")
-            for i, (label, forces) in enumerate((other or {}).items()):
-                if name in forces:
-                    ax.plot(t, forces[name][:, k], lw=0.7, alpha=0.8, color=f"C{i + 1}", label=label)
-            ax.set_ylabel(f"F{axis} [N]")
-            ax.grid(alpha=0.3)
-        axes[0, j].set_title(name, fontsize=8)
-        axes[2, j].set_xlabel("t [s]")
-    axes[0, 0].legend(fontsize=7)
-    import textwrap
-
-    # (wrapped: a vehicle's name with its citation ran off both edges, a citation audit)
-    fig.suptitle("\n".join(textwrap.wrap(title, max(40, int(12 * fig.get_size_inches()[0])))), fontsize=9)
-    return _save(fig, path)
-
-
-def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, path, *, title: str = "") -> Path:
-    """Like Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed.
-
-    ``loads``: "thrust", "drag", "torque" -> (N,) collective rotor thrust, in-plane force
-    and sum of |torque| of the fitted model; ``hover``: the hover model's (T = k_T Omega^2,
-    D = 0, Q = k_Q Omega^2) same keys; ``vertical_error``: label -> (N,) body-z force error
-    (model - measured) [N]. Medians in 1 m/s bins.
-
-    Parameters
-    ----------
-    speed : array_like, shape (N,)
-        Each sample's speed [m/s], finite: the bins run from 0 to the largest, and a bin
-        of fewer than 3 samples is left empty.
-    loads, hover : dict
-        ``"thrust"``, ``"drag"`` [N] and ``"torque"`` [N m] -> shape (N,).
-    vertical_error : dict
-        Label -> body-z force error [N], shape (N,); the first drawn solid, the rest dashed.
-    path : str or Path
-        Figure file, written atomically; the format from the extension (png, pdf, svg;
-        any other: PNG).
-    title : str
-
-    Returns
-    -------
-    Path
-        ``path``.
-
-    Raises
-    ------
-    ValueError
-        Where ``speed`` is empty or holds a value that is not finite.
-    """
-    speed = np.asarray(speed, float)
-    if speed.size == 0 or not np.isfinite(speed).all():  # ("arange: cannot compute length", stop 102)
-        raise ValueError(f"speed: give finite speeds [m/s] of at least one sample, got {speed.size} samples, "
-                         f"{int(np.sum(~np.isfinite(speed)))} of them not finite")
-    edges = np.arange(0.0, max(float(np.max(speed)), 1.0) + 1.0, 1.0)
-    centre = 0.5 * (edges[1:] + edges[:-1])
-
-    def binned(y):
-        out = np.full(centre.size, np.nan)
-        for i in range(centre.size):
-            m = (speed >= edges[i]) & (speed < edges[i + 1])
-            if m.sum() >= 3:
-                out[i] = np.median(np.asarray(y)[m])
-        return out
-
-    fig, axes = _figure(1, 4, (15, 3.6))
-    labels = (("thrust", "collective thrust [N]"), ("drag", "collective in-plane force [N]"),
-              ("torque", "sum |torque| [N m]"))
-    for ax, (key, ylabel) in zip(axes, labels):
-        ax.plot(centre, binned(loads[key]), "o-", ms=3, label="BET+BEMT (fitted)")
-        ax.plot(centre, binned(hover[key]), "s--", ms=3, label="hover model")
-        ax.set_ylabel(ylabel)
-    for i, (label, err) in enumerate(vertical_error.items()):
-        axes[3].plot(centre, binned(err), "o-" if i == 0 else "s--", ms=3, label=label)
-    axes[3].axhline(0, color="r", lw=1, label="ground truth")
-    axes[3].set_ylabel("vertical force error [N] (median)")
-    for ax in axes:
-        ax.set_xlabel("speed [m/s]")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle(title, fontsize=9)
     return _save(fig, path)

@@ -249,7 +249,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
     from ..identify import DataError, fit_level_flight, level_flight_forces, read_level_flight
     from ..identify.level_flight import level_flight_warnings
     from ..identify.level_flight_fit import hover_vertical_force
-    from ..plots import plot_level_flight_fit
+    from ..plots_flight import plot_level_flight_fit
     from ._vehicle import _one_set, _vehicle
 
     check_outputs(_out_files(out), [data, vehicle, base_spec])

@@ -275,7 +275,7 @@ def _figures(samples, names, held, pred, baselines, veh, params, air, vehicle):
         import numpy as np
 
         from ..identify.flight import BASELINES, baseline_force
-        from ..plots import plot_flight_speed, plot_flight_timeseries
+        from ..plots_flight import plot_flight_speed, plot_flight_timeseries
 
         t = {n: samples.t[samples.log_index == k] for k, n in enumerate(names)}
         meas = {n: samples.force[samples.log_index == k] for k, n in enumerate(names)}

@@ -132,10 +132,10 @@ def _validate_catalogue(prop: str, params_spec, air_choice, figure, as_json) -> 
     and J-sweep data, printed (or as JSON), with the figure where --figure names one, and what
     of the data the set was fitted to."""
     if figure is not None:
-        from ..plots import require_matplotlib
+        from ..plots import FIGURE_FORMATS, require_matplotlib
 
         require_matplotlib()  # (the figure comes after the validation, stop 102)
-        if figure.suffix.lower() not in (".png", ".pdf", ".svg"):
+        if figure.suffix.lower().lstrip(".") not in FIGURE_FORMATS:  # (plots refuses the others too, stop 104)
             raise InputError(f"--figure: {figure}: give a .png, .pdf or .svg file name (the format follows it)")
         check_outputs([("--figure", figure)], [params_spec])
     from ..core.solver import SolverError
