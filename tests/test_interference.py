@@ -67,7 +67,9 @@ def test_table_matches_direct_evaluation_and_is_mirror_symmetric():
     tab = InterferenceTable(2.41, 0.0, 1.0)
     chi, psi = math.radians(31.0), math.radians(20.0)
     direct = wake_ratio(chi, (2.41 * math.cos(psi), 2.41 * math.sin(psi), 0.0))
-    assert tab(chi, psi) == pytest.approx(direct, abs=0.01 * abs(tab.values).max())
+    # between the nodes (0.12% off here; 0.01 of the table's largest value, 13.1 at chi = 90 deg, was
+    # 168% of this one until stop 104, so that any interpolation passed)
+    assert tab(chi, psi) == pytest.approx(direct, rel=5e-3)
     assert tab(chi, -psi) == pytest.approx(tab(chi, psi), rel=1e-12)
     c, p = CHI_NODES[10], PSI_NODES[3]  # at a node: the direct value itself
     assert tab(c, p) == pytest.approx(wake_ratio(c, (2.41 * math.cos(p), 2.41 * math.sin(p), 0.0)), rel=1e-9)
@@ -157,7 +159,8 @@ def test_params_file_carries_a_fitted_factor(tmp_path, generic):
         read_body(p)
 
 
-def test_fit_flight_accepts_the_factor_as_a_parameter():
+def test_the_interference_factor_is_a_flight_fit_parameter_bounded_0_to_3():
+    """The names and bounds only; a fit that frees it and recovers it: tests/test_audit_split_helpers.py."""
     from propmap.identify.options import AIRFRAME_BOUNDS
     from propmap.identify.flight import AIRFRAME_NAMES
 

@@ -236,7 +236,7 @@ def test_predict_broadcasts_every_load_to_the_inputs_shape(target):
     one = predict(target, c, 600.0, 2.0, 0.5)
     assert [np.shape(x) for x in one] == [()] * 4
     assert all(float(a[1]) == float(b) for a, b in zip(loads, one))
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match=r"^omega, airspeed and incidence must broadcast together: shape mismatch"):
         predict(target, c, np.ones(2), np.ones(3), 0.5)
 
 

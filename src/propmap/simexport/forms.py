@@ -136,8 +136,11 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
     # (broadcast first: Q and M_R of rotorpy, T and Q of the Gazebo forms took omega's shape alone)
     # (each checked as rotor_loads checks it: a negative airspeed gave a negative drag, NaN NaN loads and "800" was
     # read as 800, an export audit)
-    om, V, b = np.broadcast_arrays(*(_as_array(k, x) for k, x in (("omega", omega), ("airspeed", airspeed),
-                                                                   ("incidence", incidence))))
+    arrays = [_as_array(k, x) for k, x in (("omega", omega), ("airspeed", airspeed), ("incidence", incidence))]
+    try:
+        om, V, b = np.broadcast_arrays(*arrays)
+    except ValueError as exc:  # (NumPy's words alone, naming no input, until stop 104: as rotor_loads words it)
+        raise ValueError(f"omega, airspeed and incidence must broadcast together: {exc}") from None
     # (below 0 and NaN refused above, as rotor_loads refuses them; the multinomial is singular at 0 as well)
     if target == "multinomial" and np.any(om == 0):
         raise ValueError(f"omega must be > 0 rad/s for the {target} model (the rotation rate's magnitude), got 0.0")
