@@ -4,7 +4,7 @@ construction for DA4052), the file rotated to that helix's angle at 0.75 R, and 
 (DA4002: measured), each scored blind and static + lowest (CT rms in % of static CT) with the generic set
 and prior fitted without the family, as `propmap validate --all` scores.
 
-    .venv/bin/python tools/family_geometry.py da4002     # (and da4052; about 2 minutes each on 2 cores)
+    .venv/bin/python tools/family_geometry.py da4002     # (and da4052; ~10 s each, kernels compiled; 2026-12-02)
 
 Data: UIUC Propeller Data Site vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), as bundled; da4002_geom.txt
 from ../shared/data/uiuc_propdb/v2 (the package does not ship it). Results: docs/validation.md, Where the model

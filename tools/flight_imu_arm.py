@@ -8,7 +8,7 @@ RSS 2021; ../shared/data/neurobem_flights) are regressed on those terms: in samp
 log predicted with the arm fitted on the other three (the rotor model itself fitted on all
 four, so the held-out gains are an upper bound).
 
-    .venv/bin/python tools/flight_imu_arm.py      # about 15 s on 2 cores
+    .venv/bin/python tools/flight_imu_arm.py      # about 50 s on 2 cores (2026-12-02; 105 s under another job's load)
 
 Findings (2026-11-25): docs/flight.md, "Where it is still wrong".
 """

@@ -7,7 +7,7 @@ examples in docs/flight.md use the logs' 1.204). The rotor and airframe paramete
 default flight fit to the forces of all four logs (``fit_flight``, 25 samples a second), so
 the moments are predicted by a model that never saw them.
 
-    .venv/bin/python tools/flight_moments.py      # about 15 s on 2 cores
+    .venv/bin/python tools/flight_moments.py      # 30-80 s on 2 cores (78 s under load, 2026-12-02)
 
 The default fit carries the vehicle file's motor lag (33 ms); items 4 and 5 also run without it.
 

@@ -7,7 +7,7 @@ without its family), and each held-out rpm group's mean signed CT error (of stat
 regressed on ln(rpm / rpm of the lowest sweeps); the same for the generic set without the
 family (blind).
 
-    .venv/bin/python tools/rpm_drift.py      # about 15 s on 2 cores
+    .venv/bin/python tools/rpm_drift.py      # 15-30 s on 2 cores (30 s under another job's load, 2026-12-02)
 
 Prints the median slope over the catalogue and per family: positive where the model's thrust
 runs ahead of the measured one as the rpm rises (docs/validation.md, Where the model is still
