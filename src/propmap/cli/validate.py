@@ -327,7 +327,7 @@ def _in_fit(label: str, params_spec, sources, data, prop, what: str) -> tuple[di
         # PE0 file: the generic set's in-sample errors read as a prediction, a vehicle-designer audit, 2026-11-28)
         owner = _bundled_owner(mine.values()) or prop.name
         # (only where the geometry given is that propeller's: another blade's errors are no residual, a review)
-        own = list(mine) if owner != prop.name and _catalogue_geometry(owner, prop) else []
+        own = list(mine) if owner != prop.name and _catalogue_geometry(owner, prop) is True else []
         owner = owner if own else prop.name
     if fit_files:  # (by each file's content: a part of the fit's files, or them among others, labelled too)
         matched = [s for s, h in mine.items() if h in fit_files]
