@@ -204,7 +204,11 @@ def test_a_missed_target_is_said_with_where_the_check_found_it(capsys, tmp_path)
     assert at == pytest.approx([float(said.group(k)) for k in (2, 3, 4)], rel=0.05)
     assert 3000 <= at[0] <= 9000 and 0 <= at[1] <= 15 and 0 <= at[2] <= 180
     code, text, _ = run(capsys, "map", "--check", out, "--check-points", "60")
-    assert code == 3 and re.search(r"FAILED \(apce_8x6: \w+ at \d+ rpm, [\d.]+ m/s, [\d.]+ deg", text), text
+    verdict = re.search(r"FAILED \(apce_8x6: (\w+) ([\d.]+)% at \d+ rpm, [\d.]+ m/s, [\d.]+ deg", text)
+    assert code == 3 and verdict, text
     code, text, _ = run(capsys, "map", "--check", out, "--check-points", "60", "--json")
     got = json.loads(text)
+    # the verdict's error is the recomputed maximum (it named only the point until stop 104)
+    assert float(verdict.group(2)) == pytest.approx(100 * got["recomputed"][f"check_cubic_{verdict.group(1)}_max"],
+                                                    abs=0.051)
     assert len(got["recomputed"]["check_cubic_torque_max_at"]) == len(got["stored"]["check_cubic_torque_max_at"]) == 3

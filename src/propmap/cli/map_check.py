@@ -87,8 +87,9 @@ def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
         why = ("every check point in a flagged cell" if res["check_points_flagged"] >= n else
                "no finite error at the unflagged check points" if all(math.isnan(v) for v in worst.values()) else None)
         if over or why:
-            failed.append(f"{rm.attrs.get('propeller')}: " + (", ".join(k + _where(res, "cubic", k) for k in over)
-                                                             if over else f"not tested, {why}"))
+            # (each with its error, as the build's warning says it: the verdict named only the point, stop 104)
+            said = ", ".join(f"{k} {100 * res[f'check_cubic_{k}_max']:.1f}%{_where(res, 'cubic', k)}" for k in over)
+            failed.append(f"{rm.attrs.get('propeller')}: " + (said if over else f"not tested, {why}"))
         results.append((prop, rm, seed, res, over, why is not None))
     if as_json:
         out = []
