@@ -59,8 +59,8 @@ def test_a_plot_function_names_an_unknown_mplbackend():
     """Kills plots.py:53 (``_figure`` without its ``require_matplotlib()``): a plot function called with
     MPLBACKEND=bogus raised matplotlib's own "Key backend: 'bogus'" instead of naming the variable."""
     code = ("import numpy as np\nimport propmap.plots_flight as p\ntry:\n"
-            "    p.plot_flight_speed([1.0, 2.0], {k: np.ones(2) for k in ('thrust', 'drag', 'torque')},\n"
-            "                        {k: np.ones(2) for k in ('thrust', 'drag', 'torque')}, {'m': np.zeros(2)},\n"
+            "    p.plot_flight_speed([1.0, 1.2, 1.4], {k: np.ones(3) for k in ('thrust', 'drag', 'torque')},\n"
+            "                        {k: np.ones(3) for k in ('thrust', 'drag', 'torque')}, {'m': np.zeros(3)},\n"
             "                        'never.png')\nexcept ValueError as e:\n    print(e)\n")
     r = subprocess.run([sys.executable, "-c", code], env=dict(os.environ, MPLBACKEND="bogus"), capture_output=True,
                        text=True, timeout=120, check=False)

@@ -78,3 +78,110 @@ def test_the_hub_rule_compares_the_blade_not_only_the_size():
     assert _catalogue_geometry("nr640_5_15deg", pm.load_propeller("nr640_5_15deg_4b")) == "other hub"
     assert _catalogue_geometry("apce_8x6", three) is False
     assert _catalogue_geometry("no_such_propeller", three) is False
+
+
+# ---- a figure's inputs: what it cannot draw is refused, not written as an empty figure (a helper's audit) -----------
+
+@pytest.mark.parametrize("path, error, said", [
+    (None, TypeError, r"path must be a file path \(str or os.PathLike\), got NoneType"),
+    (3, TypeError, r"path must be a file path \(str or os.PathLike\), got int"),
+    ("t.png/", ValueError, r"path is empty or names no file \('t.png/'\)"),
+    ("", ValueError, "path is empty or names no file"),
+])
+def test_a_figure_path_that_is_no_file_path_is_refused_naming_it(path, error, said):
+    with pytest.raises(error, match=said):
+        plots.plot_cases({"beaver": None}, path)
+
+
+def test_a_folder_named_like_a_figure_is_refused_before_drawing(tmp_path, monkeypatch):
+    (tmp_path / "f.png").mkdir()
+    monkeypatch.setattr(plots, "_figure", lambda *a, **k: pytest.fail("drew a figure it then could not write"))
+    with pytest.raises(ValueError, match=r"f.png' is a folder: give the figure's file"):
+        plots.plot_cases({"beaver": None}, tmp_path / "f.png")
+
+
+def _loads(n):
+    return {k: np.ones(n) for k in ("thrust", "drag", "torque")}
+
+
+@pytest.mark.parametrize("speed, said", [
+    ([2e7, 1.0, 1.0], r"speed: give speeds \[m/s\] in \[0, 500\], got 1 to 2e\+07"),  # (2e7 bins took minutes)
+    ([-1.0, 1.0, 1.0], r"in \[0, 500\], got -1 to 1"),
+    ([0.5, 1.5, 2.5], "no 1 m/s bin holds the 3 samples a median needs"),  # (an empty figure)
+])
+def test_the_speed_figure_refuses_speeds_it_cannot_bin(speed, said, tmp_path):
+    with pytest.raises(ValueError, match=said):
+        plots_flight.plot_flight_speed(speed, _loads(3), _loads(3), {"m": np.zeros(3)}, tmp_path / "s.png")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_cases_figure_refuses_no_case_it_draws(tmp_path):
+    with pytest.raises(ValueError, match=r"cases: none of apc10x7e, dji9443, beaver, gill2019 among \['x'\]"):
+        plots.plot_cases({"x": 1}, tmp_path / "c.png")
+    with pytest.raises(TypeError, match="cases must be a dict of case name -> CaseResult, got list"):
+        plots.plot_cases([], tmp_path / "c.png")
+
+
+@pytest.mark.parametrize("value", [0.0, float("nan"), -0.01])
+def test_the_cv_figure_refuses_an_error_a_log_axis_cannot_show(value, tmp_path):
+    rows = [{"blind": {"rms_ct": 0.05, "rms_cp": 0.04}}, {"blind": {"rms_ct": value, "rms_cp": 0.03}}]
+    with pytest.raises(ValueError, match="1 rms errors not finite and positive"):
+        plots.plot_cv_summary({"summary": {"blind": {}}, "propellers": rows}, tmp_path / "c.png")
+    with pytest.raises(ValueError, match="0 rms errors not finite and positive .*, among 0"):
+        plots.plot_cv_summary({"summary": {"blind": {}}, "propellers": []}, tmp_path / "c.png")
+
+
+def test_the_parity_figure_checks_its_mask_and_models(tmp_path):
+    from types import SimpleNamespace
+
+    data = SimpleNamespace(measured={"thrust": np.array([1.0, 2.0, 3.0])})
+    model = {"fitted": {"thrust": np.array([1.1, 2.0, 2.9])}}
+    with pytest.raises(ValueError, match=r"held_mask must be booleans of shape \(3,\), one per point, got int64"):
+        plots.plot_load_parity(data, model, [0, 1, 0], tmp_path / "p.png")
+    with pytest.raises(ValueError, match=r"held_mask must be booleans of shape \(3,\)"):
+        plots.plot_load_parity(data, model, np.zeros(2, bool), tmp_path / "p.png")
+    with pytest.raises(ValueError, match="model: give label -> loads with each measured one .*got 0 sets"):
+        plots.plot_load_parity(data, {}, np.zeros(3, bool), tmp_path / "p.png")
+    with pytest.raises(ValueError, match="got 1 sets, missing thrust"):
+        plots.plot_load_parity(data, {"fitted": {"drag": np.ones(3)}}, np.zeros(3, bool), tmp_path / "p.png")
+    assert list(tmp_path.iterdir()) == []
+    plots.plot_load_parity(data, model, [False, True, False], tmp_path / "p.png")  # (a list of bools is taken)
+    assert (tmp_path / "p.png").read_bytes().startswith(b"\x89PNG")
+
+
+def test_the_envelope_figure_refuses_a_hover_thrust_of_zero(tmp_path):
+    import pandas as pd
+
+    table = pd.DataFrame({"airspeed": [0.0, 5.0], "incidence_deg": [90.0, 90.0], "thrust": [2.0, 2.1],
+                          "drag": [0.0, 0.1], "thrust_hover": [0.0, 0.0]})
+    with pytest.raises(ValueError, match="thrust_hover has no finite value but 0"):
+        plots.plot_envelope(table, tmp_path / "e.png")
+
+
+def test_the_contour_figure_checks_its_map_and_rpm(tmp_path):
+    from test_stop102 import _map_ds
+
+    ds = _map_ds([0.0, 5.0, 10.0])
+    for rpm in (None, -5.0, float("inf"), 7000.0):  # (None: xarray's KeyError; the others drew the nearest row)
+        with pytest.raises(ValueError, match=r"rpm must be a finite number in \[6000, 6000\] rpm \(the map's axis\)"):
+            plots.plot_map_contours(ds, rpm, tmp_path / "m.png")
+    with pytest.raises(TypeError, match="ds must be a map .* got dict"):
+        plots.plot_map_contours({}, 6000.0, tmp_path / "m.png")
+    blank = ds.assign(thrust=ds["thrust"] * np.nan)
+    with pytest.raises(ValueError, match="the map has no finite thrust at 6000 rpm: nothing to draw"):
+        plots.plot_map_contours(blank, 6000.0, tmp_path / "m.png")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_contour_figure_takes_a_rotor_map(small_map, tmp_path):
+    from propmap.rotormap import RotorMap
+
+    out = plots.plot_map_contours(RotorMap(small_map[2]), 6500.0, tmp_path / "m.svg")  # ('sel' until stop 104)
+    assert out.read_bytes().lstrip().startswith(b"<?xml")
+
+
+def test_validate_takes_a_figure_extension_in_any_case(capsys, tmp_path):
+    """The CLI's check of --figure and the plots' agree (an upper-case .PNG passes both)."""
+    code, _, err = run(capsys, "validate", "apce_8x6", "--figure", tmp_path / "v.PNG")
+    assert code == 0, err
+    assert (tmp_path / "v.PNG").read_bytes().startswith(b"\x89PNG")

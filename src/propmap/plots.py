@@ -8,12 +8,15 @@ The flight figures are in :mod:`propmap.plots_flight`.
 
 from __future__ import annotations
 
+import math
 import os
 from pathlib import Path
 
 import numpy as np
 
-from .io.atomic import atomic_write
+from .core._numbers import checked
+from .io.atomic import atomic_write, check_file_name
+from .io.inputs import as_path
 
 __all__ = ["require_matplotlib", "plot_validation", "plot_envelope", "plot_load_fit", "plot_load_parity",
            "plot_cv_summary", "plot_cases", "plot_map_contours"]
@@ -71,7 +74,13 @@ FIGURE_FORMATS = ("png", "pdf", "svg")
 
 def _format(path) -> str:
     """The figure format of ``path`` by its extension; ValueError for an extension that is not
-    one of :data:`FIGURE_FORMATS` (a ``.jpg`` got PNG bytes under its name until stop 104)."""
+    one of :data:`FIGURE_FORMATS` (a ``.jpg`` got PNG bytes under its name until stop 104), a path
+    that names no file or a folder (found after drawing until then), TypeError for a path that
+    is not one (pathlib's words, naming nothing, until then)."""
+    as_path(path, "path")
+    check_file_name(path)  # (the path as given: a Path drops a trailing separator, "new.png/")
+    if Path(path).is_dir():
+        raise ValueError(f"path {os.fspath(path)!r:.200} is a folder: give the figure's file")
     fmt = Path(path).suffix.lower().lstrip(".")
     if fmt not in FIGURE_FORMATS:
         raise ValueError(f"path {str(path)!r:.200}: a figure's extension gives its format, one of "
@@ -112,8 +121,10 @@ def plot_validation(validation, path, *, title: str = "") -> Path:
     Raises
     ------
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing).
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
     """
     _format(path)
     fig, axes = _figure(1, 2, (11, 4.2))
@@ -166,9 +177,12 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
 
     Raises
     ------
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing), or where a column is missing or no row has a finite thrust (nothing to draw).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing), or where a column is missing, no row has a finite thrust
+        (nothing to draw) or ``thrust_hover`` is 0 or not finite throughout.
     """
     _format(path)
     missing = [c for c in ("airspeed", "incidence_deg", "thrust", "drag", "thrust_hover") if c not in table]
@@ -176,8 +190,11 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
         raise ValueError(f"table: no column {', '.join(missing)} (plot_envelope draws propmap demo's envelope table)")
     if not np.isfinite(np.asarray(table["thrust"], float)).any():  # (empty panels were written, stop 102)
         raise ValueError(f"table: no finite thrust among its {len(table)} rows: nothing to draw")
-    fig, axes = _figure(1, 3, (14, 4.2))
     T_hover = float(table.thrust_hover.abs().max())  # one scale for every curve (the rpm's hover thrust)
+    if not (math.isfinite(T_hover) and T_hover > 0):  # (its panel was inf or empty, stop 104)
+        raise ValueError(f"table: thrust_hover has no finite value but 0 (largest |value| {T_hover}): the hover "
+                         "model's error panel has no scale")
+    fig, axes = _figure(1, 3, (14, 4.2))
     for inc, g in table.groupby("incidence_deg"):
         g = g.sort_values("airspeed")
         line, = axes[0].plot(g.airspeed, g.thrust, "-", label=f"incidence {inc:g} deg")
@@ -223,8 +240,10 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
     Raises
     ------
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing).
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
     """
     _format(path)
     fig, axes = _figure(1, 2, (11, 4.2))
@@ -277,11 +296,23 @@ def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> 
     Raises
     ------
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing); ``held_mask`` not booleans of shape (N,); ``model``
+        empty or without a measured quantity.
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
     """
     _format(path)
     keys = list(data.measured)
+    n = len(data.measured[keys[0]]) if keys else 0
+    held_mask = np.asarray(held_mask)
+    if held_mask.dtype != bool or held_mask.shape != (n,):  # (a list met "bad operand type for unary ~", stop 104)
+        raise ValueError(f"held_mask must be booleans of shape ({n},), one per point, got {held_mask.dtype} of "
+                         f"shape {held_mask.shape}")
+    missing = [k for m in model.values() for k in keys if k not in m]
+    if not model or missing or not keys:  # (an empty figure was written, stop 104)
+        raise ValueError(f"model: give label -> loads with each measured one ({', '.join(keys) or 'none measured'})"
+                         f"; got {len(model)} sets{', missing ' + ', '.join(sorted(set(missing))) if missing else ''}")
     fig, axes = _figure(1, len(keys), (4.5 * len(keys), 4), squeeze=False)
     units = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
     for ax, k in zip(axes[0], keys):
@@ -327,8 +358,11 @@ def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
     Raises
     ------
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing); no rms error to draw, or one not finite
+        and positive (the axes are logarithmic).
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
     """
     _format(path)
     require_matplotlib()
@@ -336,12 +370,18 @@ def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
 
     from .io.catalogue import APC_CITATION, UIUC_CITATION, UIUC_V2_CITATION
 
-    fig, axes = _figure(1, 2, (11, 4.2))
     rows = catalogue_result["propellers"]
+    # (a propeller a protocol did not score, None, is left out of its curve, an audit, stop 102)
+    curves = {(key, q): np.sort([100 * r[key][q] for r in rows if r.get(key) and r[key].get(q) is not None])
+              for key in catalogue_result["summary"] for q in ("rms_ct", "rms_cp")}
+    bad = sum(int(np.sum(~(np.isfinite(v) & (v > 0)))) for v in curves.values())
+    if bad or not any(v.size for v in curves.values()):  # (an empty figure or a log axis' nothing, stop 104)
+        raise ValueError(f"catalogue_result: {bad} rms errors not finite and positive (a log axis), among "
+                         f"{sum(v.size for v in curves.values())}: give finite rms > 0 of at least one propeller")
+    fig, axes = _figure(1, 2, (11, 4.2))
     for key in catalogue_result["summary"]:
         for ax, q in zip(axes, ("rms_ct", "rms_cp")):
-            # (a propeller a protocol did not score, None, is left out of its curve, an audit, stop 102)
-            v = np.sort([100 * r[key][q] for r in rows if r.get(key) and r[key].get(q) is not None])
+            v = curves[key, q]
             ax.step(v, np.arange(1, v.size + 1) / v.size, where="post", label=key)
     for ax, q in zip(axes, ("|dCT| / static CT", "|dCP| / static CP")):
         ax.set_xlabel(f"rms {q} on held-out data [%]")
@@ -388,10 +428,18 @@ def plot_cases(cases: dict, path) -> Path:
     Raises
     ------
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing); ``cases`` without one of the
+        four cases drawn.
+    TypeError
+        ``path`` neither a str nor an os.PathLike; ``cases`` not a dict.
     """
     _format(path)
+    if not isinstance(cases, dict):
+        raise TypeError(f"cases must be a dict of case name -> CaseResult, got {type(cases).__name__}")
+    if not {"apc10x7e", "dji9443", "beaver", "gill2019"} & set(cases):  # (an empty figure was written, stop 104)
+        raise ValueError(f"cases: none of apc10x7e, dji9443, beaver, gill2019 among {sorted(map(str, cases))[:6]}: "
+                         "nothing to draw")
     fig, axes = _figure(1, 5, (21, 4.2))
     a = cases.get("apc10x7e")
     if a is not None:
@@ -463,17 +511,30 @@ def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
 
     Raises
     ------
+    TypeError
+        ``path`` neither a str nor an os.PathLike; ``ds`` neither a map's Dataset nor a RotorMap.
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing), or where the map has fewer than two airspeed or incidence nodes (no contour to draw).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing); ``rpm`` not a number within the map's rpm axis; the map
+        has fewer than two airspeed or incidence nodes or no finite thrust at that rpm (no
+        contour to draw).
     """
     _format(path)
+    ds = getattr(ds, "dataset", ds)  # (a RotorMap's: AttributeError 'sel' until stop 104)
+    if not all(hasattr(ds, a) for a in ("sel", "data_vars")) or "rpm" not in getattr(ds, "coords", ()):
+        raise TypeError(f"ds must be a map (an xarray Dataset of propmap.maps.build_map, or a RotorMap), got "
+                        f"{type(ds).__name__}")
+    axis = np.asarray(ds["rpm"].values, float)
+    # (None met xarray's KeyError, -5 and inf drew the nearest row without a word, stop 104)
+    rpm = checked("rpm", rpm, float(axis.min()), float(axis.max()), unit="rpm (the map's axis)")
     row = ds.sel(rpm=rpm, method="nearest")
     V = row["airspeed"].values
     inc = row["incidence_deg"].values
     if V.size < 2 or inc.size < 2:
         raise ValueError(f"a contour figure needs at least two airspeed and two incidence nodes; the map has "
                          f"{V.size} and {inc.size}")
+    if not np.isfinite(row["thrust"].values).any():  # (an empty figure was written, stop 104)
+        raise ValueError(f"the map has no finite thrust at {float(row['rpm']):.6g} rpm: nothing to draw")
     panels = [("thrust", row["thrust"].values, "thrust T [N]"), ("drag", row["drag"].values, "rotor drag D [N]"),
               ("torque", row["torque"].values, "torque Q [N m]")]
     # the hover model's static thrust is the map's at 0 m/s: where the axis has no such node the panel is left

@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from . import plots
+from .core._inputs import AIRSPEED_MAX
 
 __all__ = ["plot_level_flight_fit", "plot_flight_timeseries", "plot_flight_speed"]
 
@@ -47,8 +48,10 @@ def plot_level_flight_fit(data, forces, hover_vertical, weight, path, *, title: 
     Raises
     ------
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing).
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
     """
     plots._format(path)
     V = data.airspeed
@@ -104,8 +107,10 @@ def plot_flight_timeseries(t_by_log: dict, measured: dict, predicted: dict, path
     Raises
     ------
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing).
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing).
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
     """
     plots._format(path)
     names = list(t_by_log)
@@ -142,8 +147,8 @@ def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, pat
     Parameters
     ----------
     speed : array_like, shape (N,)
-        Each sample's speed [m/s], finite: the bins run from 0 to the largest, and a bin
-        of fewer than 3 samples is left empty.
+        Each sample's speed [m/s], finite, in [0, AIRSPEED_MAX] (500): the bins run from 0 to
+        the largest, and a bin of fewer than 3 samples is left empty (at least one must hold 3).
     loads, hover : dict
         ``"thrust"``, ``"drag"`` [N] and ``"torque"`` [N m] -> shape (N,).
     vertical_error : dict
@@ -160,17 +165,26 @@ def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, pat
 
     Raises
     ------
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
     ValueError
-        Where ``path``'s extension is not ``.png``, ``.pdf`` or ``.svg`` (checked before
-        drawing), or where ``speed`` is empty or holds a value that is not finite.
+        Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
+        ``.svg`` (checked before drawing), or where ``speed`` is empty, holds a value that is not
+        finite or outside [0, AIRSPEED_MAX] m/s, or puts fewer than 3 samples in every bin.
     """
     plots._format(path)
     speed = np.asarray(speed, float)
     if speed.size == 0 or not np.isfinite(speed).all():  # ("arange: cannot compute length", stop 102)
         raise ValueError(f"speed: give finite speeds [m/s] of at least one sample, got {speed.size} samples, "
                          f"{int(np.sum(~np.isfinite(speed)))} of them not finite")
+    if speed.min() < 0.0 or speed.max() > AIRSPEED_MAX:  # (2e7 m/s drew 2e7 bins for minutes, stop 104)
+        raise ValueError(f"speed: give speeds [m/s] in [0, {AIRSPEED_MAX:g}], got {speed.min():.6g} to "
+                         f"{speed.max():.6g}")
     edges = np.arange(0.0, max(float(np.max(speed)), 1.0) + 1.0, 1.0)
     centre = 0.5 * (edges[1:] + edges[:-1])
+    if np.histogram(speed, edges)[0].max() < 3:  # (an empty figure was written, stop 104)
+        raise ValueError(f"speed: no 1 m/s bin holds the 3 samples a median needs (of {speed.size} samples): "
+                         "nothing to draw")
 
     def binned(y):
         out = np.full(centre.size, np.nan)
