@@ -12,6 +12,7 @@ from cli_helpers import run
 import propmap as pm
 import propmap.plots as plots
 import propmap.plots_flight as plots_flight
+from propmap.simexport import predict
 
 #: every public figure function, by the module that holds it
 FIGURES = [getattr(m, n) for m in (plots, plots_flight) for n in m.__all__ if n.startswith("plot_")]
@@ -185,3 +186,36 @@ def test_validate_takes_a_figure_extension_in_any_case(capsys, tmp_path):
     code, _, err = run(capsys, "validate", "apce_8x6", "--figure", tmp_path / "v.PNG")
     assert code == 0, err
     assert (tmp_path / "v.PNG").read_bytes().startswith(b"\x89PNG")
+
+
+# ---- simexport.predict's coefficients (a helper's bad-input audit) ---------------------------------------------------
+
+_MULTINOMIAL = {"R": 0.1, "rho": 1.225, "CT": [0.01, -0.05, 0.0, 0.02, 0.0, 0.0], "CH": [0.01, 0.0, 0.0, 0.0],
+                "CQ": [0.001, 0.0, 0.0, 0.0, 0.0, 0.0], "CR": [0.0, 0.0, 0.0, 0.0]}
+
+
+@pytest.mark.parametrize("change, error, said", [
+    ({"CT": [1.0, 1.0]}, ValueError, r"coefficients\['CT'\] must be a list of 6 numbers, one per term, got \[1.0, 1"),
+    ({"CH": [0.0] * 6}, ValueError, r"coefficients\['CH'\] must be a list of 4 numbers"),
+    ({"CQ": "000000"}, ValueError, r"coefficients\['CQ'\] must be a list of 6 numbers"),
+    ({"R": 0.0}, ValueError, r"coefficients\['R'\] must be a finite number in \(0, inf\), got 0.0"),  # (NaN loads)
+    ({"rho": -1.0}, ValueError, r"coefficients\['rho'\] must be a finite number in \(0, inf\)"),
+    ({"CT": [0.01, float("nan"), 0, 0, 0, 0]}, ValueError, r"coefficients\['CT'\]\[1\] must be a finite number"),
+    ({"CR": None}, KeyError, r"coefficients has no 'CR', a term of the multinomial model"),
+])
+def test_predict_refuses_a_multinomial_it_cannot_evaluate(change, error, said):
+    c = {k: v for k, v in {**_MULTINOMIAL, **change}.items() if v is not None}
+    with pytest.raises(error, match=said):
+        predict("multinomial", c, 800.0, 1.0, 0.5)
+
+
+def test_predict_refuses_coefficients_that_are_not_numbers():
+    c = {"k_eta": 1e-5, "k_h": 1e-3, "k_z": 1e-4, "k_d": 1e-4, "k_m": 1e-7}
+    assert np.isfinite(predict("rotorpy", c, 800.0, 1.0, 0.5)).all()
+    for k, bad in (("k_eta", float("nan")), ("k_d", "1e-4"), ("k_m", None)):
+        with pytest.raises(ValueError, match=rf"coefficients\['{k}'\] must be a finite number"):
+            predict("rotorpy", {**c, k: bad}, 800.0, 1.0, 0.5)
+    with pytest.raises(TypeError, match="coefficients must be a dict of the rotorpy model's terms, got NoneType"):
+        predict("rotorpy", None, 800.0, 1.0, 0.5)
+    T, D, Q, MR = predict("multinomial", _MULTINOMIAL, 800.0, 1.0, 0.5)  # (the valid one evaluates)
+    assert T > 0 and D > 0 and Q > 0 and MR == 0

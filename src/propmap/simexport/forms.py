@@ -52,6 +52,7 @@ import warnings
 import numpy as np
 
 from ..core._inputs import _as_array
+from ..core._numbers import checked
 
 __all__ = ["ALIASES", "EVEN_TERMS", "GAZEBO_AXIAL_SPEED", "ODD_TERMS", "TARGETS", "canonical_target", "predict"]
 
@@ -98,6 +99,34 @@ def canonical_target(target: str) -> str:
 #: the multinomial's terms (names as in the JSON file's terms_even / terms_odd)
 EVEN_TERMS = ("1", "lambda", "lambda^2", "mu^2", "lambda^3", "lambda mu^2")
 ODD_TERMS = ("mu", "mu lambda", "mu lambda^2", "mu^3")
+#: each target's terms: a number, or a list of the multinomial's coefficients (one per term)
+_TERMS = {"rotorpy": ("k_eta", "k_h", "k_z", "k_d", "k_m"),
+          "gazebo-classic": ("motorConstant", "rotorDragCoefficient", "momentConstant", "rollingMomentCoefficient"),
+          "multinomial": ("R", "rho", "CT", "CH", "CQ", "CR")}
+_TERMS["gz-sim"] = _TERMS["gazebo-classic"]
+
+
+def _checked_coefficients(target: str, coefficients) -> dict:
+    """``coefficients`` with each of the target's terms a finite number (R and rho > 0) or, for the
+    multinomial's CT, CQ (EVEN_TERMS) and CH, CR (ODD_TERMS), a list of one per term; a missing
+    term: KeyError (a list of 2 was read by zip as 2 terms, R = 0 gave NaN loads, None met
+    "'NoneType' object is not subscriptable": a bad-input audit, stop 104)."""
+    if not hasattr(coefficients, "keys") or not hasattr(coefficients, "__getitem__"):
+        raise TypeError(f"coefficients must be a dict of the {target} model's terms, got {type(coefficients).__name__}")
+    out = {}
+    for k in _TERMS[target]:
+        if k not in coefficients:
+            raise KeyError(f"coefficients has no {k!r}, a term of the {target} model (its terms: "
+                           f"{', '.join(_TERMS[target])})")
+        v, name = coefficients[k], f"coefficients[{k!r}]"
+        if k in ("CT", "CQ", "CH", "CR"):
+            n = len(EVEN_TERMS if k in ("CT", "CQ") else ODD_TERMS)
+            if isinstance(v, (str, bytes)) or not hasattr(v, "__len__") or len(v) != n:
+                raise ValueError(f"{name} must be a list of {n} numbers, one per term, got {v!r:.60}")
+            out[k] = [checked(f"{name}[{i}]", x) for i, x in enumerate(v)]
+        else:
+            out[k] = checked(name, v, 0.0, low_open=True) if k in ("R", "rho") else checked(name, v)
+    return out
 
 
 def predict(target: str, coefficients: dict, omega, airspeed, incidence):
@@ -128,11 +157,15 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
         a bool (Omega in [0, OMEGA_MAX] rad/s, a magnitude; V in [0, AIRSPEED_MAX] m/s, a
         magnitude; beta in [0, pi] rad), or an Omega of 0 for the multinomial, whose terms divide
         by Omega R (NaN loads and, below 0, loads of the wrong sign before); inputs whose shapes
-        do not broadcast.
+        do not broadcast; a term that is not a finite number (R, rho not > 0), or a multinomial
+        list of another length than its terms'.
     KeyError
         ``coefficients`` without a term of the target's model.
+    TypeError
+        ``coefficients`` not a dict.
     """
     target = canonical_target(target)
+    c = _checked_coefficients(target, coefficients)
     # (broadcast first: Q and M_R of rotorpy, T and Q of the Gazebo forms took omega's shape alone)
     # (each checked as rotor_loads checks it: a negative airspeed gave a negative drag, NaN NaN loads and "800" was
     # read as 800, an export audit)
@@ -145,7 +178,6 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
     if target == "multinomial" and np.any(om == 0):
         raise ValueError(f"omega must be > 0 rad/s for the {target} model (the rotation rate's magnitude), got 0.0")
     Vip, Vz = V * np.sin(b), V * np.cos(b)
-    c = coefficients
     if target == "rotorpy":
         T = c["k_eta"] * om**2 + c["k_h"] * Vip**2 - c["k_z"] * om * Vz
         return T, c["k_d"] * om * Vip, c["k_m"] * om**2, 0.0 * om
