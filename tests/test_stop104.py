@@ -137,9 +137,9 @@ def test_the_parity_figure_checks_its_mask_and_models(tmp_path):
 
     data = SimpleNamespace(measured={"thrust": np.array([1.0, 2.0, 3.0])})
     model = {"fitted": {"thrust": np.array([1.1, 2.0, 2.9])}}
-    with pytest.raises(ValueError, match=r"held_mask must be booleans of shape \(3,\), one per point, got int64"):
+    with pytest.raises(ValueError, match=r"plot_load_parity: mask must be an array of booleans of shape \(3,\)"):
         plots.plot_load_parity(data, model, [0, 1, 0], tmp_path / "p.png")
-    with pytest.raises(ValueError, match=r"held_mask must be booleans of shape \(3,\)"):
+    with pytest.raises(ValueError, match=r"plot_load_parity: mask must have shape \(3,\), one boolean per row"):
         plots.plot_load_parity(data, model, np.zeros(2, bool), tmp_path / "p.png")
     with pytest.raises(ValueError, match="model: give label -> loads with each measured one .*got 0 sets"):
         plots.plot_load_parity(data, {}, np.zeros(3, bool), tmp_path / "p.png")
@@ -219,3 +219,19 @@ def test_predict_refuses_coefficients_that_are_not_numbers():
         predict("rotorpy", None, 800.0, 1.0, 0.5)
     T, D, Q, MR = predict("multinomial", _MULTINOMIAL, 800.0, 1.0, 0.5)  # (the valid one evaluates)
     assert T > 0 and D > 0 and Q > 0 and MR == 0
+
+
+@pytest.mark.parametrize("mask, said", [
+    ("abc", r"mask must be an array of booleans of shape \(\d+,\), one per row, got dtype <U3"),
+    (True, r"mask must have shape \(\d+,\), one boolean per row, got \(\)"),  # (these two ran every point as 1)
+    ([0, 5, 7], r"mask must be an array of booleans .* got dtype int64"),  # (NumPy's IndexError)
+    (np.ones(3, bool), r"mask must have shape \(\d+,\), one boolean per row, got \(3,\)"),
+])
+def test_coefficient_errors_takes_a_boolean_mask_of_one_per_point_only(mask, said):
+    from propmap.identify import loads_from_catalogue
+    from propmap.validation import coefficient_errors
+
+    prop = pm.load_propeller("apce_8x6")
+    data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
+    with pytest.raises(ValueError, match="coefficient_errors: " + said):
+        coefficient_errors(data, prop, pm.generic_params(), mask=mask)

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .core._numbers import checked
+from .identify._checks import boolean_mask
 from .io.atomic import atomic_write, check_file_name
 from .io.inputs import as_path
 
@@ -305,10 +306,7 @@ def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> 
     _format(path)
     keys = list(data.measured)
     n = len(data.measured[keys[0]]) if keys else 0
-    held_mask = np.asarray(held_mask)
-    if held_mask.dtype != bool or held_mask.shape != (n,):  # (a list met "bad operand type for unary ~", stop 104)
-        raise ValueError(f"held_mask must be booleans of shape ({n},), one per point, got {held_mask.dtype} of "
-                         f"shape {held_mask.shape}")
+    held_mask = boolean_mask("plot_load_parity", held_mask, n)  # (a list met "bad operand type for unary ~", stop 104)
     missing = [k for m in model.values() for k in keys if k not in m]
     if not model or missing or not keys:  # (an empty figure was written, stop 104)
         raise ValueError(f"model: give label -> loads with each measured one ({', '.join(keys) or 'none measured'})"

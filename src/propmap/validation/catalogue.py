@@ -11,6 +11,7 @@ import numpy as np
 from ..core.airfoil import Air, SectionParams
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
+from ..identify._checks import boolean_mask
 from ..identify.load_data import STATIC_AIRSPEED
 
 __all__ = ["PROTOCOLS", "PROTOCOL_TEXT", "coefficient_errors", "cross_validate", "rpm_groups"]
@@ -103,7 +104,7 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
     ------
     ValueError
         No static points, a load measured but at no static point (or of mean 0 there), or the
-        mask selects none.
+        mask not booleans of shape (N,), or selecting none.
     SolverError
         From the model.
     """
@@ -114,7 +115,8 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
         raise ValueError(f"coefficient_errors needs static points (airspeed up to {STATIC_AIRSPEED:g} m/s) to "
                          "normalise by")
     CT0, CP0 = _static_mean(CT, static, "thrust"), _static_mean(CP, static, "torque")
-    m = np.ones(data.n, bool) if mask is None else np.asarray(mask, bool)
+    # ("abc" and True ran every point as n_points 1, a list of indices met NumPy's IndexError, stop 104)
+    m = np.ones(data.n, bool) if mask is None else boolean_mask("coefficient_errors", mask, data.n)
     if not m.any():
         raise ValueError("the mask selects no point")
     r = rotor_loads(propeller, params, data.omega[m], data.airspeed[m], data.incidence[m], air=air,
