@@ -235,3 +235,42 @@ def test_coefficient_errors_takes_a_boolean_mask_of_one_per_point_only(mask, sai
     data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
     with pytest.raises(ValueError, match="coefficient_errors: " + said):
         coefficient_errors(data, prop, pm.generic_params(), mask=mask)
+
+
+def test_multinomial_fit_names_omega_where_its_grid_would_pass_the_model_airspeed():
+    """Above 500 m/s / (0.24 R) its error named an airspeed (518 m/s) the caller never gave."""
+    from propmap.cases import multinomial_fit
+
+    prop = pm.load_propeller("apce_10x7")
+    top = 500.0 / (0.24 * prop.radius)
+    with pytest.raises(ValueError, match=r"omega must be a finite number in \[1, 16404.19\d*\] rad/s, got 17000.0"):
+        multinomial_fit(prop, pm.generic_params(), 17000.0)
+    assert top == pytest.approx(16404.2, abs=0.1)
+
+
+@pytest.mark.parametrize("kw, error, said", [
+    ({"rpm": "6000"}, ValueError, r"rpm must be rotation rates in \[100, 50000\] rpm, at least one, got '6000'"),
+    ({"rpm": ["a"]}, ValueError, r"rpm must be rotation rates .* at least one, got \['a'\]"),
+    ({"rpm": []}, ValueError, r"rpm must be rotation rates .* at least one, got \[\]"),
+    ({"rpm": [True]}, ValueError, r"rpm must be rotation rates"),
+    ({"rpm": [50.0]}, ValueError, r"rpm must be rotation rates in \[100, 50000\] rpm, got array\(\[50"),
+    ({"air": None}, TypeError, "air must be a propmap Air, got NoneType"),
+    ({"rolling_moment": "no"}, TypeError, "rolling_moment must be a bool, got str"),
+    ({"name": ["apce_8x6"]}, TypeError, r"name must be a catalogue name \(str\), got list"),
+])
+def test_gill2019_loads_names_a_bad_argument(kw, error, said):
+    from propmap.cases_gill2019 import gill2019_loads
+
+    with pytest.raises(error, match=said):
+        gill2019_loads(**{"name": "apce_8x6", **kw})
+    assert gill2019_loads("apce_8x6", np.array([6000])).n == 43  # (NumPy integers are numbers)
+
+
+def test_run_case_names_a_bad_argument():
+    from propmap.cases import run_case
+
+    with pytest.raises(TypeError, match="param_sets must be a dict of label -> parameters, got list"):
+        run_case("dji9443", [pm.generic_params()])
+    for case in ("apc10x7e", "dji9443", "beaver", "gill2019"):  # (two met AttributeError, two took None)
+        with pytest.raises(TypeError, match="air must be a propmap Air, got NoneType"):
+            run_case(case, {"generic": pm.generic_params()}, air=None)

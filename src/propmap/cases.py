@@ -282,11 +282,19 @@ def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
     ValueError
         Unknown case, no parameter set, or a callable among ``param_sets`` for a case other
         than gill2019.
+    TypeError
+        ``param_sets`` not a dict, ``air`` not an :class:`Air`.
     SolverError
         From the model.
     """
     if case not in CASES:
         raise ValueError(f"unknown case {case!r}; valid: {', '.join(CASES)}")
+    # (a list met "'list' object has no attribute 'values'", air=None an AttributeError in two cases and was taken
+    # by the other two: a bad-input audit, stop 104)
+    if not isinstance(param_sets, dict):
+        raise TypeError(f"param_sets must be a dict of label -> parameters, got {type(param_sets).__name__}")
+    if not isinstance(air, Air):
+        raise TypeError(f"air must be a propmap Air, got {type(air).__name__}")
     if not param_sets:  # (beaver's raised a bare StopIteration: an audit, stop 100)
         raise ValueError("param_sets: give at least one parameter set (label -> parameters)")
     if case != "gill2019" and any(callable(p) for p in param_sets.values()):

@@ -22,7 +22,7 @@ from .core._numbers import checked
 from .core.units import RPM
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
-from .core.solver import check_model_args, model_air, rotor_loads
+from .core.solver import AIRSPEED_MAX, check_model_args, model_air, rotor_loads
 
 __all__ = ["gill2019_coefficients", "gill2019_loads", "gill2019_incidence_fits", "multinomial_fit", "GILL2019_FILE",
            "GILL2019_RPM", "GILL2019_ADVANCE", "GILL2019_INCIDENCE_DEG", "GILL2019_FITS", "GILL2019_FIT_MR",
@@ -88,16 +88,29 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air(), rolling
     Raises
     ------
     ValueError
-        ``name`` without published coefficients, or an rpm out of range.
+        ``name`` without published coefficients, or an rpm that is not a number (text included)
+        in range.
+    TypeError
+        ``name`` not a str, ``air`` not an :class:`Air`, ``rolling_moment`` not a bool.
     """
     from .identify.data import LoadData
     from .io.catalogue import load_propeller
 
+    # (a list as name met "unhashable type", air=None "'NoneType' object has no attribute 'rho'", "no" was taken as
+    # a rolling moment asked for, "6000" read as 6000: a bad-input audit, stop 104)
+    for arg, value, kind, what in (("name", name, str, "a catalogue name (str)"), ("air", air, Air, "a propmap Air"),
+                                   ("rolling_moment", rolling_moment, (bool, np.bool_), "a bool")):
+        if not isinstance(value, kind):
+            raise TypeError(f"{arg} must be {what}, got {type(value).__name__}")
     published = gill2019_coefficients()
     if name not in published:
         raise ValueError(f"no published gill2019 coefficients for {name!r:.60}; known: {', '.join(published)}")
-    rpm = np.atleast_1d(np.asarray(rpm, float))
-    if rpm.ndim != 1 or rpm.size == 0 or not np.all((rpm >= 100.0) & (rpm <= 50000.0)):
+    given = np.atleast_1d(np.asarray(rpm, dtype=object))
+    if given.ndim != 1 or given.size == 0 or not all(isinstance(x, (int, float, np.integer, np.floating))
+                                                     and not isinstance(x, (bool, np.bool_)) for x in given):
+        raise ValueError(f"rpm must be rotation rates in [100, 50000] rpm, at least one, got {rpm!r:.60}")
+    rpm = given.astype(float)
+    if not np.all((rpm >= 100.0) & (rpm <= 50000.0)):
         raise ValueError(f"rpm must be rotation rates in [100, 50000] rpm, got {rpm!r:.60}")
     c, R = published[name], load_propeller(name).radius
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
@@ -198,7 +211,8 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     prop : Propeller
     p : AirfoilParams or CamberedParams
     omega : float
-        Rotation rate [rad/s], in [1, 1e5].
+        Rotation rate [rad/s], in [1, 1e5] and at most AIRSPEED_MAX / (0.24 R), so that the
+        grid's fastest point (advance ratio 0.24) stays within the model's 500 m/s.
     air : Air, optional
         Default: the parameter set's own (``p.air``); the coefficients depend on it through
         the Reynolds and Mach numbers only.
@@ -228,7 +242,10 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     """
     check_model_args(prop, p)  # (a propeller of None met "'NoneType' object has no attribute 'radius'")
     air = model_air(p, air, name="p")
-    omega = checked("omega", omega, 1.0, 1e5, unit="rad/s")  # (NumPy numbers too, core._numbers)
+    # (NumPy numbers too, core._numbers; above 500 m/s / (0.24 R) the error named an airspeed the caller never
+    # gave, a bad-input audit, stop 104)
+    omega = checked("omega", omega, 1.0, min(1e5, AIRSPEED_MAX / (max(GILL2019_ADVANCE) * prop.radius)),
+                    unit="rad/s")
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
     adv, inc = np.concatenate([[0.0], adv.ravel()]), np.concatenate([[0.0], inc.ravel()])
     R = prop.radius
