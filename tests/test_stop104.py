@@ -274,3 +274,34 @@ def test_run_case_names_a_bad_argument():
     for case in ("apc10x7e", "dji9443", "beaver", "gill2019"):  # (two met AttributeError, two took None)
         with pytest.raises(TypeError, match="air must be a propmap Air, got NoneType"):
             run_case(case, {"generic": pm.generic_params()}, air=None)
+
+
+# ---- simexport's files (a helper's bad-input audit) ------------------------------------------------------------------
+
+def test_write_export_never_overwrites_the_vehicle_file_it_names(tmp_path):
+    import shutil
+
+    from propmap.simexport import export_sim, write_export
+
+    veh_file = tmp_path / "quad.toml"
+    shutil.copy(pm.__path__[0] + "/data/examples/quadrotor.toml", veh_file)
+    before = veh_file.read_bytes()
+    prop = pm.load_propeller("apce_8x6")
+    res = export_sim("rotorpy", prop, pm.generic_params(), n_points=50, seed=0)
+    veh = pm.read_vehicle(veh_file)
+    with pytest.raises(ValueError, match=r"quad.toml, the file the vehicle or airframe came from: an input is never"):
+        write_export(res, veh_file, vehicle=veh, vehicle_label=str(veh_file))
+    assert veh_file.read_bytes() == before
+    with pytest.raises(TypeError, match="vehicle_label and airframe_label must be text"):
+        write_export(res, tmp_path / "r.py", vehicle_label={})
+    written = write_export(res, tmp_path / "r.py", vehicle=veh, vehicle_label=str(veh_file))
+    assert [p.name for p in written] == ["r.py", "r.report.json"] and veh_file.read_bytes() == before
+
+
+@pytest.mark.parametrize("path", ["", ".", "dir/"])
+def test_report_path_refuses_a_path_that_names_no_file(path):
+    from propmap.simexport import report_path
+
+    with pytest.raises(ValueError, match="path is empty or names no file"):  # ("dir/" gave dir.report.json)
+        report_path(path)
+    assert report_path("dir/c.json").name == "c.report.json"

@@ -33,7 +33,16 @@ def report_path(path) -> Path:
     Returns
     -------
     Path
+
+    Raises
+    ------
+    ValueError
+        An empty ``path`` or one that names no file (``"."``, a trailing separator: pathlib's "has
+        an empty name", or ``dir/`` read as ``dir.report.json``, until stop 104).
+    TypeError
+        ``path`` not a str or os.PathLike.
     """
+    check_file_name(path)  # (the path as given: a Path drops a trailing separator)
     path = as_path(path)
     return path.with_name(path.stem + ".report.json")
 
@@ -297,7 +306,8 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     vehicle : Vehicle, optional
         rotorpy only: write ``quad_params`` for it (:func:`check_rotorpy_vehicle`).
     vehicle_label : str
-        Where the vehicle came from, for the file's comment.
+        Where the vehicle came from, for the file's comment; a file it names is never
+        overwritten (nor one ``airframe_label`` names).
     airframe_label : str
         Where the vehicle's airframe drag areas came from where not its file (a flight fit's
         parameter file with a ``[body]`` table), for the comment on RotorPy's c_D.
@@ -310,11 +320,12 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     Raises
     ------
     ValueError
-        ``vehicle`` with another target, or one RotorPy cannot represent; an empty ``path``, or
-        one named ``*.report.json`` (an export's report: it would replace another export's).
+        ``vehicle`` with another target, or one RotorPy cannot represent; an empty ``path``, one
+        named ``*.report.json`` (an export's report: it would replace another export's), or the
+        file ``vehicle_label`` or ``airframe_label`` names (an input).
     TypeError
         ``res`` not a :class:`SimExport`; ``vehicle`` given and not a :class:`propmap.Vehicle`;
-        ``path`` not a str or os.PathLike.
+        ``path`` not a str or os.PathLike; a label not a str.
     OSError
         The files cannot be written.
     """
@@ -324,6 +335,14 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
         raise TypeError(f"res must be a SimExport (propmap.export_sim), got {type(res).__name__}")
     check_file_name(path)
     path = as_path(path)
+    if not isinstance(vehicle_label, str) or not isinstance(airframe_label, str):  # ({} met pathlib's TypeError)
+        raise TypeError(f"vehicle_label and airframe_label must be text (str), got {type(vehicle_label).__name__} "
+                        f"and {type(airframe_label).__name__}")
+    for label in (vehicle_label, airframe_label):  # (the API overwrote the vehicle file it was given, stop 104)
+        for out in (path, report_path(path)):
+            if label and Path(label).is_file() and out.exists() and out.samefile(label):
+                raise ValueError(f"path: {out} is {label}, the file the vehicle or airframe came from: an input is "
+                                 "never overwritten; name the export otherwise")
     if path.name.lower().endswith(".report.json"):
         raise ValueError(f"path: {path.name}: a name ending in .report.json is an export's report (written beside its "
                          "coefficient file); name the coefficient file otherwise")
