@@ -305,3 +305,54 @@ def test_report_path_refuses_a_path_that_names_no_file(path):
     with pytest.raises(ValueError, match="path is empty or names no file"):  # ("dir/" gave dir.report.json)
         report_path(path)
     assert report_path("dir/c.json").name == "c.report.json"
+
+
+# ---- the validation functions' arguments (a helper's bad-input audit) -----------------------------------------------
+
+@pytest.fixture(scope="module")
+def apc_loads():
+    from propmap.identify import loads_from_catalogue
+
+    prop = pm.load_propeller("apce_8x6")
+    return prop, loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
+
+
+def test_the_validation_functions_name_an_argument_of_the_wrong_kind(apc_loads):
+    from propmap import validation as v
+
+    prop, data = apc_loads
+    g = pm.generic_params()
+    entry = pm.catalogue()["apce_8x6"]
+    calls = [  # (each met an AttributeError deep inside: 'diameter', 'radius', 'air', 'static_runs', 'static')
+        (lambda: v.coefficient_errors(None, prop, g), "data must be a propmap LoadData"),
+        (lambda: v.coefficient_errors(data, None, g), "propeller must be a Propeller"),
+        (lambda: v.cross_validate(data, prop, None), "generic must be AirfoilParams or CamberedParams"),
+        (lambda: v.holdout_loads(data, None, g, [data.static]), "propeller must be a Propeller"),
+        (lambda: v.load_errors(data, prop, None), "params must be AirfoilParams or CamberedParams"),
+        (lambda: v.validate(None, prop, g), "entry must be a CatalogueEntry"),
+        (lambda: v.holdout_comparison(entry, prop, g, "generic", ["x"]), "baseline must be AirfoilParams"),
+        (lambda: v.rpm_groups(None), "data must be a propmap LoadData, got NoneType"),
+    ]
+    for call, said in calls:
+        with pytest.raises(TypeError, match=said):
+            call()
+
+
+def test_the_validation_functions_take_lists_of_names_only(apc_loads):
+    from propmap import validation as v
+
+    prop, data = apc_loads
+    g = pm.generic_params()
+    with pytest.raises(ValueError, match=r"protocols must be a list of names, got 'blind' \(give \['blind'\]\)"):
+        v.cross_validate(data, prop, g, protocols="blind")  # (read as b, l, i, n, d)
+    with pytest.raises(ValueError, match="protocols: none given"):
+        v.cross_validate(data, prop, g, protocols=[])  # (returned {})
+    with pytest.raises(ValueError, match="protocols: unknown None"):
+        v.cross_validate(data, prop, g, protocols=[None])
+    with pytest.raises(ValueError, match="folds must be a list of one boolean training mask per fold"):
+        v.holdout_loads(data, prop, g, [])
+    val = v.validate(pm.catalogue()["apce_8x6"], prop, g, discretization=pm.Discretization(12, 8))
+    with pytest.raises(ValueError, match="run_ids must be a list of names, got 5"):
+        val.summary("model", 5)
+    one = val.runs[1].run_id
+    assert val.summary("model", one) == val.summary("model", [one])

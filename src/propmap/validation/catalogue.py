@@ -12,7 +12,8 @@ from ..core.airfoil import Air, SectionParams
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
 from ..identify._checks import boolean_mask
-from ..identify.load_data import STATIC_AIRSPEED
+from ._checks import check_inputs, check_names
+from ..identify.load_data import STATIC_AIRSPEED, LoadData
 
 __all__ = ["PROTOCOLS", "PROTOCOL_TEXT", "coefficient_errors", "cross_validate", "rpm_groups"]
 
@@ -107,7 +108,10 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
         mask not booleans of shape (N,), or selecting none.
     SolverError
         From the model.
+    TypeError
+        ``data`` not a LoadData, ``propeller`` not a Propeller, ``params`` not a parameter set.
     """
+    check_inputs(propeller, {"params": params}, data=data)
     air = model_air(params, air)
     CT, CP = _coefficients(data, propeller, air)
     static = data.static
@@ -139,7 +143,14 @@ def rpm_groups(data) -> list[list[str]]:
     -------
     list of list of str
         The sweeps' group names, one list per rotation rate.
+
+    Raises
+    ------
+    TypeError
+        ``data`` not a LoadData.
     """
+    if not isinstance(data, LoadData):  # ("'NoneType' object has no attribute 'static'", stop 104)
+        raise TypeError(f"data must be a propmap LoadData, got {type(data).__name__}")
     static = data.static
     sweeps = [g for g in dict.fromkeys(data.group) if not np.all(static[data.group == g])]
     rate = {g: float(np.mean(data.omega[data.group == g])) for g in sweeps}
@@ -208,14 +219,18 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     Raises
     ------
     ValueError
-        An unknown protocol, no static points, a load measured but at no static point, or
-        fewer than two sweeps.
+        An unknown protocol, ``protocols`` one str or empty, no static points, a load measured
+        but at no static point, or fewer than two sweeps.
     SolverError
         From the model.
+    TypeError
+        ``data`` not a LoadData, ``propeller`` not a Propeller, ``generic`` not a parameter set.
     """
+    check_inputs(propeller, {"generic": generic}, data=data)
     air = model_air(generic, air, name="generic")
     from ..identify import FitOptions, fit_loads
 
+    protocols = check_names("protocols", protocols)  # ("blind" ran as b, l, i, n, d; [] returned {})
     bad = [p for p in protocols if p not in PROTOCOLS]
     if bad:
         raise ValueError(f"unknown protocol(s) {', '.join(bad)}; valid: {', '.join(PROTOCOLS)}")

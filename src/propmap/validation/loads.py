@@ -12,6 +12,7 @@ from ..core.airfoil import Air, SectionParams
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
 from ..core.states import STATES
+from ._checks import check_inputs
 
 __all__ = ["holdout_loads", "load_errors"]
 
@@ -57,15 +58,22 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     Raises
     ------
     ValueError
-        A quantity not measured, no static point (with thrust and torque measured), an
-        empty fold, or as ``fit_loads``.
+        A quantity not measured, no static point (with thrust and torque measured), no fold
+        or an empty one, or as ``fit_loads``.
     SolverError
         From the model.
+    TypeError
+        ``data`` not a LoadData, ``propeller`` not a Propeller, ``base`` not a parameter set.
     """
     from ..identify import FitOptions, fit_loads
     from ..identify.load_data import INPLANE_KEYS
 
+    check_inputs(propeller, {"base": base}, data=data)
     air = model_air(base, air, name="base")
+    folds = list(folds) if hasattr(folds, "__iter__") else folds
+    if not isinstance(folds, list) or not folds:  # ([] met NumPy's "need at least one array to concatenate")
+        raise ValueError(f"folds must be a list of one boolean training mask per fold, at least one, got "
+                         f"{folds!r:.60}")
     missing = [k for k in ("thrust", "drag", "torque") if k not in data.measured]
     static = data.static
     if missing or not static.any():
@@ -149,9 +157,12 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
         No load measured, or a reference of zero (every measured value 0).
     SolverError
         From the model.
+    TypeError
+        ``data`` not a LoadData, ``propeller`` not a Propeller, ``params`` not a parameter set.
     """
     from ..identify.load_data import INPLANE_KEYS, LOAD_KEYS, data_air
 
+    check_inputs(propeller, {"params": params}, data=data)  # (params=None met 'no attribute air', stop 104)
     air = data_air(data, air, params.air)[0]  # (the density the data logged, where no air is given)
     keys = [k for k in LOAD_KEYS if k in data.measured]
     if not keys:

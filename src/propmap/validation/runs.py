@@ -13,6 +13,7 @@ from ..core.airfoil import Air, SectionParams
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
 from ..io.catalogue import CatalogueEntry
+from ._checks import check_inputs, check_names
 
 __all__ = ["SweepComparison", "Validation", "holdout_comparison", "validate"]
 
@@ -143,9 +144,12 @@ class Validation:
         Raises
         ------
         ValueError
-            If ``which`` is neither, or an id of ``run_ids`` names no run of the propeller.
+            If ``which`` is neither, an id of ``run_ids`` names no run of the propeller, or
+            ``run_ids`` is neither one id nor a list of them.
         """
-        ids = None if run_ids is None else ({run_ids} if isinstance(run_ids, str) else set(run_ids))
+        # (5 met "'int' object is not iterable", stop 104)
+        ids = None if run_ids is None else set(check_names("run_ids", [run_ids] if isinstance(run_ids, str)
+                                                           else run_ids))
         runs = [r for r in self.runs if ids is None or r.run_id in ids]
         unknown = sorted(ids - {r.run_id for r in self.runs}) if ids is not None else []
         if unknown or not runs:
@@ -211,7 +215,11 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
         The entry has no static run (the hover model needs one) or no measurements.
     SolverError
         From the solver.
+    TypeError
+        ``entry`` not a CatalogueEntry, ``propeller`` not a Propeller, ``params`` not a
+        parameter set.
     """
+    check_inputs(propeller, {"params": params}, entry=entry)
     air = model_air(params, air)
     statics = entry.static_runs()
     sweeps = entry.sweeps()
@@ -251,9 +259,9 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Sect
         The geometry to use (normally ``load_propeller(entry.name)``).
     fitted, baseline : AirfoilParams or CamberedParams
         The fitted set and the set it is compared with (e.g. the generic set).
-    holdout : iterable of str
-        The UIUC run ids whose errors are pooled (the runs the fit did not see); duplicates
-        are read once.
+    holdout : str or iterable of str
+        The UIUC run ids whose errors are pooled (the runs the fit did not see), at least one;
+        duplicates are read once.
     air : Air, optional
         Default: the fitted set's own (``.air``); used for both sets.
     discretization : Discretization, optional
@@ -269,14 +277,19 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Sect
     Raises
     ------
     ValueError
-        As :func:`validate`.
+        As :func:`validate`; ``holdout`` neither a run id nor a list of them, or none given.
     SolverError
         From the model.
+    TypeError
+        ``entry`` not a CatalogueEntry, ``propeller`` not a Propeller, ``fitted`` or
+        ``baseline`` not a parameter set.
     """
+    check_inputs(propeller, {"fitted": fitted, "baseline": baseline}, entry=entry)
+    # (one run id, as Validation.summary takes it: set("2804rd") split it into characters, stop 104)
+    held = sorted(set(check_names("holdout", [holdout] if isinstance(holdout, str) else holdout)))
     air = model_air(fitted, air, name="fitted")
     vf = validate(entry, propeller, fitted, air=air, discretization=discretization)
     vb = validate(entry, propeller, baseline, air=air, discretization=discretization)
-    held = sorted(set(holdout))
     return {"holdout": held, "fitted": vf.summary("model", held), "baseline": vb.summary("model", held),
             "hover_model": vf.summary("hover_model", held), "validation_fitted": vf, "validation_baseline": vb}
 
