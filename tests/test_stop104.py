@@ -356,3 +356,27 @@ def test_the_validation_functions_take_lists_of_names_only(apc_loads):
         val.summary("model", 5)
     one = val.runs[1].run_id
     assert val.summary("model", one) == val.summary("model", [one])
+
+
+def test_the_flight_figures_refuse_forces_of_another_shape(tmp_path):
+    from types import SimpleNamespace
+
+    t = {"log": np.linspace(0.0, 1.0, 5)}
+    good = {"log": np.zeros((5, 3))}
+    for args, said in [
+        (({}, {}, {}), "t_by_log must be a dict of at least one log name"),  # (matplotlib's "Number of columns")
+        ((t, {"log": np.zeros((5, 2))}, good), r"measured: log 'log' needs a body force of shape \(5, 3\).*\(5, 2\)"),
+        ((t, good, {}), r"predicted: log 'log' needs a body force of shape \(5, 3\).* got none"),
+        ((t, good, {"log": np.zeros((4, 3))}), r"predicted: .* got \(4, 3\)"),
+    ]:
+        with pytest.raises(ValueError, match=said):
+            plots_flight.plot_flight_timeseries(*args, tmp_path / "f.png")
+    with pytest.raises(ValueError, match=r"other\['k'\]: log 'log' needs"):
+        plots_flight.plot_flight_timeseries(t, good, good, tmp_path / "f.png", other={"k": {"log": np.zeros(5)}})
+    data = SimpleNamespace(airspeed=np.array([1.0, 2.0]), pitch=np.zeros(2))
+    forces = {"thrust": np.ones((2, 4)), "drag": np.ones((2, 4)), "torque": np.ones((2, 4)), "vertical": np.ones(2)}
+    with pytest.raises(ValueError, match=r"forces\['thrust'\] must have shape \(2, n_rotors\).* got \(2,\)"):
+        plots_flight.plot_level_flight_fit(data, {**forces, "thrust": np.ones(2)}, np.ones(2), 10.0, tmp_path / "l.png")
+    with pytest.raises(ValueError, match=r"hover_vertical must have shape \(2,\) and weight be finite"):
+        plots_flight.plot_level_flight_fit(data, forces, np.ones(2), float("nan"), tmp_path / "l.png")
+    assert list(tmp_path.iterdir()) == []

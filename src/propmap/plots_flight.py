@@ -49,12 +49,24 @@ def plot_level_flight_fit(data, forces, hover_vertical, weight, path, *, title: 
     ------
     ValueError
         Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
-        ``.svg`` (checked before drawing).
+        ``.svg`` (checked before drawing); ``forces``, ``hover_vertical`` or ``weight`` of
+        another shape than the samples', or a weight not finite.
     TypeError
         ``path`` neither a str nor an os.PathLike.
     """
     plots._format(path)
     V = data.airspeed
+    n = len(V)
+    for key, shape in (("thrust", 2), ("drag", 2), ("torque", 2), ("vertical", 1)):  # (NumPy's AxisError, stop 104)
+        got = np.shape(forces.get(key)) if isinstance(forces, dict) and key in forces else None
+        if got is None or len(got) != shape or got[0] != n:
+            raise ValueError(f"forces[{key!r}] must have shape ({n}{', n_rotors' if shape == 2 else ''}) "
+                             f"(level_flight_forces' result), got {got}")
+    hover_vertical = np.asarray(hover_vertical, float)
+    weight = np.asarray(weight, float)
+    if hover_vertical.shape != (n,) or weight.shape not in ((), (n,)) or not np.isfinite(weight).all():
+        raise ValueError(f"hover_vertical must have shape ({n},) and weight be finite, of shape () or ({n},); got "
+                         f"{hover_vertical.shape} and {weight.shape}")
     o = np.argsort(V)
     fig, axes = plots._figure(1, 5, (17, 3.6))
     T_h = hover_vertical  # hover thrust is vertical-only in level flight up to the tilt
@@ -108,12 +120,25 @@ def plot_flight_timeseries(t_by_log: dict, measured: dict, predicted: dict, path
     ------
     ValueError
         Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
-        ``.svg`` (checked before drawing).
+        ``.svg`` (checked before drawing); no log in ``t_by_log``, or a log without a measured,
+        predicted (or, where ``other`` has it, other) force of shape (N, 3).
     TypeError
         ``path`` neither a str nor an os.PathLike.
     """
     plots._format(path)
-    names = list(t_by_log)
+    names = list(t_by_log) if isinstance(t_by_log, dict) else []
+    # ({} met matplotlib's "Number of columns must be a positive integer", forces of another shape NumPy's
+    # IndexError or "x and y must have same first dimension", stop 104)
+    for name in names:
+        n = np.shape(t_by_log[name])
+        for what, forces in (("measured", measured), ("predicted", predicted),
+                             *((f"other[{k!r}]", f) for k, f in (other or {}).items() if name in f)):
+            if name not in forces or np.shape(forces[name]) != (*n, 3) or len(n) != 1:
+                raise ValueError(f"{what}: log {name!r:.60} needs a body force of shape ({n[0] if n else 'N'}, 3), "
+                                 f"one row per sample of t_by_log's, got "
+                                 f"{np.shape(forces[name]) if name in forces else 'none'}")
+    if not names:
+        raise ValueError(f"t_by_log must be a dict of at least one log name -> sample times, got {t_by_log!r:.60}")
     fig, axes = plots._figure(3, len(names), (4.2 * len(names), 7), squeeze=False, sharey="row")
     for j, name in enumerate(names):
         t = t_by_log[name]
