@@ -380,3 +380,15 @@ def test_the_flight_figures_refuse_forces_of_another_shape(tmp_path):
     with pytest.raises(ValueError, match=r"hover_vertical must have shape \(2,\) and weight be finite"):
         plots_flight.plot_level_flight_fit(data, forces, np.ones(2), float("nan"), tmp_path / "l.png")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_load_fit_figure_takes_the_same_runs_twice_and_a_set_of_ids(tmp_path):
+    from types import SimpleNamespace
+
+    a, b = SimpleNamespace(run_id="a"), SimpleNamespace(run_id="b")
+    with pytest.raises(ValueError, match="must be the same runs in one order, at least one; got 0 and 0 runs"):
+        plots.plot_load_fit([], [], set(), tmp_path / "l.png")  # (an IndexError)
+    with pytest.raises(ValueError, match="got 2 and 1 runs"):
+        plots.plot_load_fit([a, b], [a], set(), tmp_path / "l.png")  # (the baseline's length cut the figure)
+    with pytest.raises(ValueError, match="holdout must be a set of run ids"):
+        plots.plot_load_fit([a], [a], "ab", tmp_path / "l.png")  # ("a" in "ab": a substring)

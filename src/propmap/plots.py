@@ -242,11 +242,19 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
     ------
     ValueError
         Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
-        ``.svg`` (checked before drawing).
+        ``.svg`` (checked before drawing); the two lists not the same runs in one order or empty;
+        ``holdout`` not a set of run ids.
     TypeError
         ``path`` neither a str nor an os.PathLike.
     """
     _format(path)
+    runs_fitted, runs_baseline = list(runs_fitted), list(runs_baseline)
+    # ([] met an IndexError, a shorter baseline was cut to it, a str holdout matched as a substring, stop 104)
+    if not runs_fitted or [r.run_id for r in runs_fitted] != [r.run_id for r in runs_baseline]:
+        raise ValueError(f"runs_fitted and runs_baseline must be the same runs in one order, at least one; got "
+                         f"{len(runs_fitted)} and {len(runs_baseline)} runs")
+    if isinstance(holdout, (str, bytes)) or not all(isinstance(h, str) for h in holdout):
+        raise ValueError(f"holdout must be a set of run ids (str), got {holdout!r:.60}")
     fig, axes = _figure(1, 2, (11, 4.2))
     colors = _colors()
     for k, (rf, rb) in enumerate(zip(runs_fitted, runs_baseline)):
