@@ -392,3 +392,12 @@ def test_the_load_fit_figure_takes_the_same_runs_twice_and_a_set_of_ids(tmp_path
         plots.plot_load_fit([a, b], [a], set(), tmp_path / "l.png")  # (the baseline's length cut the figure)
     with pytest.raises(ValueError, match="holdout must be a set of run ids"):
         plots.plot_load_fit([a], [a], "ab", tmp_path / "l.png")  # ("a" in "ab": a substring)
+
+
+def test_rotorpy_directions_takes_a_sequence_of_spins():
+    from propmap.simexport import rotorpy_directions
+
+    assert rotorpy_directions(["ccw", "cw", 1, -1]) == [-1, 1, -1, 1]
+    for bad in ("ccw", 1):  # ("ccw" read as the spins 'c', 'c', 'w')
+        with pytest.raises(ValueError, match="spins must be a sequence of spins, one per rotor"):
+            rotorpy_directions(bad)

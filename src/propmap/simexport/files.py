@@ -127,8 +127,11 @@ def rotorpy_directions(spins) -> list[int]:
     Raises
     ------
     ValueError
-        A spin that is none of those.
+        A spin that is none of those; ``spins`` one str (its letters were read as spins) or not
+        a sequence.
     """
+    if isinstance(spins, (str, bytes)) or not hasattr(spins, "__iter__"):  # ("ccw": spins[0] 'c', stop 104)
+        raise ValueError(f"spins must be a sequence of spins, one per rotor, got {spins!r:.40}")
     out = []
     for k, s in enumerate(spins):
         sign = {"ccw": 1, "cw": -1}.get(s, s) if isinstance(s, str) else s
