@@ -56,7 +56,7 @@ def no_matplotlib(monkeypatch):
 # ---- plots.py --------------------------------------------------------------------------------------------------------
 
 def test_a_plot_function_names_an_unknown_mplbackend():
-    """Kills plots.py:53 (``_figure`` without its ``require_matplotlib()``): a plot function called with
+    """Kills plots.py:58 (``_figure`` without its ``require_matplotlib()``): a plot function called with
     MPLBACKEND=bogus raised matplotlib's own "Key backend: 'bogus'" instead of naming the variable."""
     code = ("import numpy as np\nimport propmap.plots_flight as p\ntry:\n"
             "    p.plot_flight_speed([1.0, 1.2, 1.4], {k: np.ones(3) for k in ('thrust', 'drag', 'torque')},\n"

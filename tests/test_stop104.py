@@ -55,7 +55,7 @@ def test_the_extension_in_any_case_gives_the_format_written(name, magic, tmp_pat
 
 def test_a_set_calibrated_on_the_same_blade_on_another_hub_is_warned_of_as_such(capsys):
     """``calibrated:da4022_5x3.75`` on ``da4022_5x3.75_3b`` was warned of as "no better than the generic set", where it
-    predicts the 3-blade hub's runs to 2.5% of static CT and the generic set to 12.7% (docs/validation.md); the
+    predicts the 3-blade hub's runs to 2.5% of static CT and the generic set to 12.7% (docs/cli.md); the
     warning now says what such sets did on UIUC's other hubs. Its errors are not labelled in-sample either: the data
     are the 3-blade hub's own."""
     code, out, err = run(capsys, "validate", "da4022_5x3.75_3b", "--params", "calibrated:da4022_5x3.75")
@@ -106,9 +106,10 @@ def _loads(n):
 
 
 @pytest.mark.parametrize("speed, said", [
-    ([2e7, 1.0, 1.0], r"speed: give speeds \[m/s\] in \[0, 500\], got 1 to 2e\+07"),  # (2e7 bins took minutes)
-    ([-1.0, 1.0, 1.0], r"in \[0, 500\], got -1 to 1"),
+    ([2e7, 1.0, 1.0], r"speed: give speeds \[m/s\] in \[0, 1000\], got 1 to 2e\+07"),  # (2e7 bins took minutes)
+    ([-1.0, 1.0, 1.0], r"in \[0, 1000\], got -1 to 1"),
     ([0.5, 1.5, 2.5], "no 1 m/s bin holds the 3 samples a median needs"),  # (an empty figure)
+    ([2.0, 2.0, 1.5], "no 1 m/s bin holds the 3 samples"),  # (counted in a closed last bin, drawn in none)
 ])
 def test_the_speed_figure_refuses_speeds_it_cannot_bin(speed, said, tmp_path):
     with pytest.raises(ValueError, match=said):
@@ -137,9 +138,9 @@ def test_the_parity_figure_checks_its_mask_and_models(tmp_path):
 
     data = SimpleNamespace(measured={"thrust": np.array([1.0, 2.0, 3.0])})
     model = {"fitted": {"thrust": np.array([1.1, 2.0, 2.9])}}
-    with pytest.raises(ValueError, match=r"plot_load_parity: mask must be an array of booleans of shape \(3,\)"):
+    with pytest.raises(ValueError, match=r"plot_load_parity: held_mask must be an array of booleans of shape \(3,"):
         plots.plot_load_parity(data, model, [0, 1, 0], tmp_path / "p.png")
-    with pytest.raises(ValueError, match=r"plot_load_parity: mask must have shape \(3,\), one boolean per row"):
+    with pytest.raises(ValueError, match=r"plot_load_parity: held_mask must have shape \(3,\), one boolean per row"):
         plots.plot_load_parity(data, model, np.zeros(2, bool), tmp_path / "p.png")
     with pytest.raises(ValueError, match="model: give label -> loads with each measured one .*got 0 sets"):
         plots.plot_load_parity(data, {}, np.zeros(3, bool), tmp_path / "p.png")
@@ -155,7 +156,7 @@ def test_the_envelope_figure_refuses_a_hover_thrust_of_zero(tmp_path):
 
     table = pd.DataFrame({"airspeed": [0.0, 5.0], "incidence_deg": [90.0, 90.0], "thrust": [2.0, 2.1],
                           "drag": [0.0, 0.1], "thrust_hover": [0.0, 0.0]})
-    with pytest.raises(ValueError, match="thrust_hover has no finite value but 0"):
+    with pytest.raises(ValueError, match=r"the largest \|thrust_hover\| must be finite and > 0, got 0.0"):
         plots.plot_envelope(table, tmp_path / "e.png")
 
 
@@ -163,9 +164,11 @@ def test_the_contour_figure_checks_its_map_and_rpm(tmp_path):
     from test_stop102 import _map_ds
 
     ds = _map_ds([0.0, 5.0, 10.0])
-    for rpm in (None, -5.0, float("inf"), 7000.0):  # (None: xarray's KeyError; the others drew the nearest row)
-        with pytest.raises(ValueError, match=r"rpm must be a finite number in \[6000, 6000\] rpm \(the map's axis\)"):
+    for rpm in (None, -5.0, float("inf")):  # (None: xarray's KeyError; the others drew the nearest row)
+        with pytest.raises(ValueError, match=r"rpm must be a finite number in \(0, inf\) rpm"):
             plots.plot_map_contours(ds, rpm, tmp_path / "m.png")
+    with pytest.raises(ValueError, match=r"rpm must lie within the map's rpm axis \[6000, 6000\], got 7000"):
+        plots.plot_map_contours(ds, 7000.0, tmp_path / "m.png")
     with pytest.raises(TypeError, match="ds must be a map .* got dict"):
         plots.plot_map_contours({}, 6000.0, tmp_path / "m.png")
     blank = ds.assign(thrust=ds["thrust"] * np.nan)
@@ -179,6 +182,8 @@ def test_the_contour_figure_takes_a_rotor_map(small_map, tmp_path):
 
     out = plots.plot_map_contours(RotorMap(small_map[2]), 6500.0, tmp_path / "m.svg")  # ('sel' until stop 104)
     assert out.read_bytes().lstrip().startswith(b"<?xml")
+    top = float(small_map[2]["rpm"].max())
+    plots.plot_map_contours(small_map[2], top * (1 + 1e-12), tmp_path / "t.png")  # (an end node to round-off)
 
 
 def test_validate_takes_a_figure_extension_in_any_case(capsys, tmp_path):
@@ -242,10 +247,11 @@ def test_multinomial_fit_names_omega_where_its_grid_would_pass_the_model_airspee
     from propmap.cases import multinomial_fit
 
     prop = pm.load_propeller("apce_10x7")
-    top = 500.0 / (0.24 * prop.radius)
     with pytest.raises(ValueError, match=r"omega must be a finite number in \[1, 16404.19\d*\] rad/s, got 17000.0"):
         multinomial_fit(prop, pm.generic_params(), 17000.0)
-    assert top == pytest.approx(16404.2, abs=0.1)
+    for name in ("apce_11x10", "apce_11x5.5"):  # (the bound itself: 0.24 omega R came out 500 + 1 ulp for these)
+        p = pm.load_propeller(name)
+        assert multinomial_fit(p, pm.generic_params(), 500.0 / (0.24 * p.radius))["CT_static"] > 0
 
 
 @pytest.mark.parametrize("kw, error, said", [
@@ -292,8 +298,11 @@ def test_write_export_never_overwrites_the_vehicle_file_it_names(tmp_path):
     with pytest.raises(ValueError, match=r"quad.toml, the file the vehicle or airframe came from: an input is never"):
         write_export(res, veh_file, vehicle=veh, vehicle_label=str(veh_file))
     assert veh_file.read_bytes() == before
-    with pytest.raises(TypeError, match="vehicle_label and airframe_label must be text"):
+    with pytest.raises(TypeError, match="vehicle_label and airframe_label must be text or a path, got dict"):
         write_export(res, tmp_path / "r.py", vehicle_label={})
+    with pytest.raises(ValueError, match="the file the vehicle or airframe came from"):  # (a Path as the label too)
+        write_export(res, veh_file, vehicle=veh, vehicle_label=veh_file)
+    assert write_export(res, tmp_path / "q.py", vehicle_label="x" * 300)[0].exists()  # (free text: no OSError)
     written = write_export(res, tmp_path / "r.py", vehicle=veh, vehicle_label=str(veh_file))
     assert [p.name for p in written] == ["r.py", "r.report.json"] and veh_file.read_bytes() == before
 
@@ -401,3 +410,13 @@ def test_rotorpy_directions_takes_a_sequence_of_spins():
     for bad in ("ccw", 1):  # ("ccw" read as the spins 'c', 'c', 'w')
         with pytest.raises(ValueError, match="spins must be a sequence of spins, one per rotor"):
             rotorpy_directions(bad)
+
+
+def test_the_speed_figure_bins_the_largest_speed(monkeypatch, tmp_path):
+    """A largest speed of a whole number fell in no bin (the bins [k, k + 1) ended at it): three samples at
+    2.0 m/s drew an empty figure."""
+    drawn = []
+    monkeypatch.setattr(plots, "_save", lambda fig, path: drawn.append(fig) or path)
+    plots_flight.plot_flight_speed([2.0, 2.0, 2.0], _loads(3), _loads(3), {"m": np.zeros(3)}, tmp_path / "s.png")
+    (line, *_), *_ = (ax.get_lines() for ax in drawn[0].axes)
+    assert np.nanmax(line.get_ydata()) == 1.0 and line.get_xdata()[np.nanargmax(line.get_ydata())] == 2.5

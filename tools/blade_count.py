@@ -4,7 +4,7 @@ Data: UIUC Propeller Data Site vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), 
 5 in 15 deg and DA4022 5 in blades on 2-, 3- and 4-blade hubs (the catalogue's
 ``nr640_5_15deg``, ``_3b``, ``_4b`` and ``da4022_5x3.75``, ``_3b``, ``_4b``).
 
-    .venv/bin/python tools/blade_count.py      # ~10 s with the kernels compiled (2026-12-02, 2 cores)
+    .venv/bin/python tools/blade_count.py      # 5-10 s with the kernels compiled (2 cores; 10 s under load)
 
 For each blade, the cambered model is fitted (CLI defaults) to all of the 2-blade
 propeller's data; that set predicts the 3- and 4-blade hubs' J-sweeps (rms and mean of

@@ -249,7 +249,8 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
     adv, inc = np.concatenate([[0.0], adv.ravel()]), np.concatenate([[0.0], inc.ravel()])
     R = prop.radius
-    r = rotor_loads(prop, p, omega, adv * omega * R, inc, air=air, radial=False)
+    # (at omega's bound, 0.24 omega R is 500 m/s to round-off: 500.00000000000006 met the model's range, a review)
+    r = rotor_loads(prop, p, omega, np.minimum(adv * omega * R, AIRSPEED_MAX), inc, air=air, radial=False)
     q = 0.5 * air.rho * math.pi * R**2 * (omega * R) ** 2
     mu, lam = adv * np.sin(inc), adv * np.cos(inc)
     one = np.ones_like(mu)

@@ -15,7 +15,6 @@ from pathlib import Path
 import numpy as np
 
 from .core._numbers import checked
-from .identify._checks import boolean_mask
 from .io.atomic import atomic_write, check_file_name
 from .io.inputs import as_path
 
@@ -183,7 +182,7 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
     ValueError
         Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
         ``.svg`` (checked before drawing), or where a column is missing, no row has a finite thrust
-        (nothing to draw) or ``thrust_hover`` is 0 or not finite throughout.
+        (nothing to draw) or the largest ``|thrust_hover|`` is 0 or not finite.
     """
     _format(path)
     missing = [c for c in ("airspeed", "incidence_deg", "thrust", "drag", "thrust_hover") if c not in table]
@@ -193,7 +192,7 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
         raise ValueError(f"table: no finite thrust among its {len(table)} rows: nothing to draw")
     T_hover = float(table.thrust_hover.abs().max())  # one scale for every curve (the rpm's hover thrust)
     if not (math.isfinite(T_hover) and T_hover > 0):  # (its panel was inf or empty, stop 104)
-        raise ValueError(f"table: thrust_hover has no finite value but 0 (largest |value| {T_hover}): the hover "
+        raise ValueError(f"table: the largest |thrust_hover| must be finite and > 0, got {T_hover}: the hover "
                          "model's error panel has no scale")
     fig, axes = _figure(1, 3, (14, 4.2))
     for inc, g in table.groupby("incidence_deg"):
@@ -250,10 +249,13 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
     _format(path)
     runs_fitted, runs_baseline = list(runs_fitted), list(runs_baseline)
     # ([] met an IndexError, a shorter baseline was cut to it, a str holdout matched as a substring, stop 104)
-    if not runs_fitted or [r.run_id for r in runs_fitted] != [r.run_id for r in runs_baseline]:
+    ids = [[r.run_id for r in runs] for runs in (runs_fitted, runs_baseline)]
+    if not runs_fitted or ids[0] != ids[1]:
         raise ValueError(f"runs_fitted and runs_baseline must be the same runs in one order, at least one; got "
-                         f"{len(runs_fitted)} and {len(runs_baseline)} runs")
-    if isinstance(holdout, (str, bytes)) or not all(isinstance(h, str) for h in holdout):
+                         f"{len(runs_fitted)} and {len(runs_baseline)} runs ({', '.join(ids[0][:4])}; "
+                         f"{', '.join(ids[1][:4])})")
+    if isinstance(holdout, (str, bytes)) or not hasattr(holdout, "__iter__") or not all(isinstance(h, str)
+                                                                                          for h in holdout):
         raise ValueError(f"holdout must be a set of run ids (str), got {holdout!r:.60}")
     fig, axes = _figure(1, 2, (11, 4.2))
     colors = _colors()
@@ -314,7 +316,9 @@ def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> 
     _format(path)
     keys = list(data.measured)
     n = len(data.measured[keys[0]]) if keys else 0
-    held_mask = boolean_mask("plot_load_parity", held_mask, n)  # (a list met "bad operand type for unary ~", stop 104)
+    from .identify._checks import boolean_mask  # (here: identify imports the solver, numba and SciPy)
+
+    held_mask = boolean_mask("plot_load_parity", held_mask, n, "held_mask")  # (a list met "unary ~", stop 104)
     missing = [k for m in model.values() for k in keys if k not in m]
     if not model or missing or not keys:  # (an empty figure was written, stop 104)
         raise ValueError(f"model: give label -> loads with each measured one ({', '.join(keys) or 'none measured'})"
@@ -531,8 +535,11 @@ def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
         raise TypeError(f"ds must be a map (an xarray Dataset of propmap.maps.build_map, or a RotorMap), got "
                         f"{type(ds).__name__}")
     axis = np.asarray(ds["rpm"].values, float)
-    # (None met xarray's KeyError, -5 and inf drew the nearest row without a word, stop 104)
-    rpm = checked("rpm", rpm, float(axis.min()), float(axis.max()), unit="rpm (the map's axis)")
+    # (None met xarray's KeyError, -5 and inf drew the nearest row without a word, stop 104; the axis' ends to
+    # round-off, a node given in rpm and stored through rad/s)
+    rpm = checked("rpm", rpm, 0.0, low_open=True, unit="rpm")
+    if not axis.min() * (1 - 1e-9) <= rpm <= axis.max() * (1 + 1e-9):
+        raise ValueError(f"rpm must lie within the map's rpm axis [{axis.min():g}, {axis.max():g}], got {rpm:g}")
     row = ds.sel(rpm=rpm, method="nearest")
     V = row["airspeed"].values
     inc = row["incidence_deg"].values

@@ -12,9 +12,11 @@ from pathlib import Path
 import numpy as np
 
 from . import plots
-from .core._inputs import AIRSPEED_MAX
 
 __all__ = ["plot_level_flight_fit", "plot_flight_timeseries", "plot_flight_speed"]
+
+#: the speed figure's largest speed [m/s]: a flight log's velocity components reach 500 m/s each, their norm 866
+SPEED_MAX = 1000.0
 
 
 def plot_level_flight_fit(data, forces, hover_vertical, weight, path, *, title: str = "") -> Path:
@@ -172,8 +174,9 @@ def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, pat
     Parameters
     ----------
     speed : array_like, shape (N,)
-        Each sample's speed [m/s], finite, in [0, AIRSPEED_MAX] (500): the bins run from 0 to
-        the largest, and a bin of fewer than 3 samples is left empty (at least one must hold 3).
+        Each sample's speed [m/s], finite, in [0, SPEED_MAX] (1000): 1 m/s bins [k, k + 1) from
+        0 to the one holding the largest, a bin of fewer than 3 samples left empty (at least one
+        must hold 3).
     loads, hover : dict
         ``"thrust"``, ``"drag"`` [N] and ``"torque"`` [N m] -> shape (N,).
     vertical_error : dict
@@ -195,19 +198,20 @@ def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, pat
     ValueError
         Where ``path`` names no file or a folder, or its extension is not ``.png``, ``.pdf`` or
         ``.svg`` (checked before drawing), or where ``speed`` is empty, holds a value that is not
-        finite or outside [0, AIRSPEED_MAX] m/s, or puts fewer than 3 samples in every bin.
+        finite or outside [0, SPEED_MAX] m/s, or puts fewer than 3 samples in every bin.
     """
     plots._format(path)
     speed = np.asarray(speed, float)
     if speed.size == 0 or not np.isfinite(speed).all():  # ("arange: cannot compute length", stop 102)
         raise ValueError(f"speed: give finite speeds [m/s] of at least one sample, got {speed.size} samples, "
                          f"{int(np.sum(~np.isfinite(speed)))} of them not finite")
-    if speed.min() < 0.0 or speed.max() > AIRSPEED_MAX:  # (2e7 m/s drew 2e7 bins for minutes, stop 104)
-        raise ValueError(f"speed: give speeds [m/s] in [0, {AIRSPEED_MAX:g}], got {speed.min():.6g} to "
+    if speed.min() < 0.0 or speed.max() > SPEED_MAX:  # (2e7 m/s drew 2e7 bins for minutes, stop 104)
+        raise ValueError(f"speed: give speeds [m/s] in [0, {SPEED_MAX:g}], got {speed.min():.6g} to "
                          f"{speed.max():.6g}")
-    edges = np.arange(0.0, max(float(np.max(speed)), 1.0) + 1.0, 1.0)
+    # 1 m/s bins [k, k + 1) up to the one holding the largest speed (a largest speed of 2.0 fell in none until stop 104)
+    edges = np.arange(0.0, max(np.floor(speed.max()) + 1.0, 1.0) + 1.0, 1.0)
     centre = 0.5 * (edges[1:] + edges[:-1])
-    if np.histogram(speed, edges)[0].max() < 3:  # (an empty figure was written, stop 104)
+    if np.bincount(np.floor(speed).astype(int)).max() < 3:  # (an empty figure was written, stop 104)
         raise ValueError(f"speed: no 1 m/s bin holds the 3 samples a median needs (of {speed.size} samples): "
                          "nothing to draw")
 

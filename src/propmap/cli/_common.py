@@ -355,7 +355,7 @@ def check_section_match(propeller, label: str, collective_deg: float = 0.0,
         return
     match = _catalogue_geometry(owner, propeller)
     if match == "other hub":  # (warned of as no better than the generic set until stop 104: da4022_5x3.75's set
-        # predicts its 3-blade hub to 2.5% of static CT, the generic set to 12.7%)
+        # predicts its 3-blade hub to 2.5% of static CT, the generic set to 12.7%: docs/cli.md)
         warn(f"{propeller.name} ({propeller.n_blades} blades) runs with {label}, calibrated on the same blade on "
              f"another hub: {OTHER_HUB}")
     elif not match:

@@ -199,7 +199,9 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     with atomic_write(stem.with_name(stem.name + ".report.txt")) as fh:
         fh.write(text + "\n")
     if figure is not None:  # last: a stopped run leaves no figure without its parameters
-        figure(stem.with_name(stem.name + ".png"))
+        # (a figure function may return the suffixes it wrote, a tuple, where one of them had nothing to draw)
+        written = figure(stem.with_name(stem.name + ".png"))
+        figure_suffixes = written if isinstance(written, tuple) else figure_suffixes
     # the fit's warnings go to standard error, once (the first MAX_WARNINGS, and how many more): the report on
     # standard output leaves them all out (report.txt keeps them), and the data's, said as they arose. It is the
     # report of the result without its warnings, not report.txt's lines less those whose text matched a warning's

@@ -64,7 +64,7 @@ def first_length(owner: str, name: str, value) -> int:
     return shape[0]
 
 
-def boolean_mask(owner: str, mask, n: int) -> np.ndarray:
+def boolean_mask(owner: str, mask, n: int, name: str = "mask") -> np.ndarray:
     """``mask`` as a boolean array of shape (n,), for ``owner``'s selection of rows.
 
     Parameters
@@ -74,6 +74,8 @@ def boolean_mask(owner: str, mask, n: int) -> np.ndarray:
     mask : array_like of bool, shape (n,)
     n : int
         The number of rows.
+    name : str
+        The argument's name, for the message (default ``mask``).
 
     Returns
     -------
@@ -88,9 +90,9 @@ def boolean_mask(owner: str, mask, n: int) -> np.ndarray:
     """
     a = np.asarray(mask)
     if a.dtype != bool:
-        raise ValueError(f"{owner}: mask must be an array of booleans of shape ({n},), one per row, got dtype "
+        raise ValueError(f"{owner}: {name} must be an array of booleans of shape ({n},), one per row, got dtype "
                          f"{a.dtype} (for indices, give a boolean array such as np.isin(np.arange({n}), indices); "
                          "rows keep their order)")
     if a.shape != (n,):
-        raise ValueError(f"{owner}: mask must have shape ({n},), one boolean per row, got {a.shape}")
+        raise ValueError(f"{owner}: {name} must have shape ({n},), one boolean per row, got {a.shape}")
     return a

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import re
 from pathlib import Path
 
@@ -328,7 +329,7 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
         file ``vehicle_label`` or ``airframe_label`` names (an input).
     TypeError
         ``res`` not a :class:`SimExport`; ``vehicle`` given and not a :class:`propmap.Vehicle`;
-        ``path`` not a str or os.PathLike; a label not a str.
+        ``path`` not a str or os.PathLike; a label neither text nor a path.
     OSError
         The files cannot be written.
     """
@@ -338,12 +339,14 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
         raise TypeError(f"res must be a SimExport (propmap.export_sim), got {type(res).__name__}")
     check_file_name(path)
     path = as_path(path)
-    if not isinstance(vehicle_label, str) or not isinstance(airframe_label, str):  # ({} met pathlib's TypeError)
-        raise TypeError(f"vehicle_label and airframe_label must be text (str), got {type(vehicle_label).__name__} "
+    labels = [vehicle_label, airframe_label]
+    if not all(isinstance(x, (str, os.PathLike)) for x in labels):  # ({} met pathlib's TypeError)
+        raise TypeError(f"vehicle_label and airframe_label must be text or a path, got {type(vehicle_label).__name__} "
                         f"and {type(airframe_label).__name__}")
+    vehicle_label, airframe_label = (os.fspath(x) for x in labels)
     for label in (vehicle_label, airframe_label):  # (the API overwrote the vehicle file it was given, stop 104)
-        for out in (path, report_path(path)):
-            if label and Path(label).is_file() and out.exists() and out.samefile(label):
+        for out in (path, report_path(path)):  # (os.path.isfile: False for free text too long for a file name)
+            if label and os.path.isfile(label) and out.exists() and out.samefile(label):
                 raise ValueError(f"path: {out} is {label}, the file the vehicle or airframe came from: an input is "
                                  "never overwritten; name the export otherwise")
     if path.name.lower().endswith(".report.json"):
