@@ -420,3 +420,32 @@ def test_the_speed_figure_bins_the_largest_speed(monkeypatch, tmp_path):
     plots_flight.plot_flight_speed([2.0, 2.0, 2.0], _loads(3), _loads(3), {"m": np.zeros(3)}, tmp_path / "s.png")
     (line, *_), *_ = (ax.get_lines() for ax in drawn[0].axes)
     assert np.nanmax(line.get_ydata()) == 1.0 and line.get_xdata()[np.nanargmax(line.get_ydata())] == 2.5
+
+
+def test_fit_flight_warns_where_its_speed_figure_has_nothing_to_draw(apc8x6, apc_params, tmp_path, monkeypatch,
+                                                                     capsys):
+    """The figures come after the parameter file: a speed figure refused (no 1 m/s bin of 3 samples) is a warning,
+    and the command's last line names the figures written."""
+    from types import SimpleNamespace
+
+    import propmap.identify.flight as identify_flight
+    from propmap.cli.flight import _figures
+
+    n = 6
+    rotors = [SimpleNamespace(propeller=apc8x6, params=None, axis=np.array([0.0, 0.0, 1.0]))] * 2
+    veh = SimpleNamespace(name="quad", rotors=rotors)
+    force = np.column_stack([np.zeros(n), np.zeros(n), np.linspace(-5.0, -4.0, n)])
+    samples = SimpleNamespace(t=np.arange(n) * 0.01, log_index=np.zeros(n, int), force=force, reference_force=None,
+                              of_log=lambda k: None, speed=np.linspace(0.0, 3.0, n),  # (2, 2, 1, 1 per bin)
+                              rotor_omega=np.full((n, 2), 6000 * np.pi / 30), n=n)
+    one = SimpleNamespace(thrust=np.full(n, 2.0), drag=np.zeros(n), torque=np.full(n, 0.05))
+    pred = SimpleNamespace(force=force + 0.1, loads=[one, one])
+    monkeypatch.setattr(identify_flight, "baseline_force", lambda *args: np.zeros((n, 3)))
+    monkeypatch.setattr(plots_flight, "plot_flight_timeseries", lambda *args, **kw: None)
+    key = identify_flight.BASELINES[-1][0]
+    figures = _figures(samples, ["log"], set(), pred, {key: {}}, veh, apc_params, pm.Air(), "v.toml")
+    assert figures(tmp_path / "f.png") == (".png",)
+    assert "the speed figure is not drawn: speed: no 1 m/s bin holds the 3 samples" in capsys.readouterr().err
+    assert not (tmp_path / "f.speed.png").exists()
+    samples.speed = np.full(n, 2.5)
+    assert figures(tmp_path / "g.png") == (".png", ".speed.png") and (tmp_path / "g.speed.png").exists()
