@@ -51,6 +51,15 @@ def apc8x6():
 
 
 @pytest.fixture(scope="session")
+def apce():
+    """apce_8x6 (APC PE0 geometry) and its bundled UIUC load data (vol. 1, Brandt & Selig): (propeller, LoadData)."""
+    from propmap.identify import loads_from_catalogue
+
+    prop = pm.load_propeller("apce_8x6")
+    return prop, loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
+
+
+@pytest.fixture(scope="session")
 def apc_params():
     """Gill & D'Andrea (2017) Table I, APC column."""
     return pm.preset("gill2017-apc")

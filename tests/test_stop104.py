@@ -232,12 +232,10 @@ def test_predict_refuses_coefficients_that_are_not_numbers():
     ([0, 5, 7], r"mask must be an array of booleans .* got dtype int64"),  # (NumPy's IndexError)
     (np.ones(3, bool), r"mask must have shape \(\d+,\), one boolean per row, got \(3,\)"),
 ])
-def test_coefficient_errors_takes_a_boolean_mask_of_one_per_point_only(mask, said):
-    from propmap.identify import loads_from_catalogue
+def test_coefficient_errors_takes_a_boolean_mask_of_one_per_point_only(mask, said, apce):
     from propmap.validation import coefficient_errors
 
-    prop = pm.load_propeller("apce_8x6")
-    data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
+    prop, data = apce
     with pytest.raises(ValueError, match="coefficient_errors: " + said):
         coefficient_errors(data, prop, pm.generic_params(), mask=mask)
 
@@ -318,18 +316,10 @@ def test_report_path_refuses_a_path_that_names_no_file(path):
 
 # ---- the validation functions' arguments (a helper's bad-input audit) -----------------------------------------------
 
-@pytest.fixture(scope="module")
-def apc_loads():
-    from propmap.identify import loads_from_catalogue
-
-    prop = pm.load_propeller("apce_8x6")
-    return prop, loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
-
-
-def test_the_validation_functions_name_an_argument_of_the_wrong_kind(apc_loads):
+def test_the_validation_functions_name_an_argument_of_the_wrong_kind(apce):
     from propmap import validation as v
 
-    prop, data = apc_loads
+    prop, data = apce
     g = pm.generic_params()
     entry = pm.catalogue()["apce_8x6"]
     calls = [  # (each met an AttributeError deep inside: 'diameter', 'radius', 'air', 'static_runs', 'static')
@@ -347,10 +337,10 @@ def test_the_validation_functions_name_an_argument_of_the_wrong_kind(apc_loads):
             call()
 
 
-def test_the_validation_functions_take_lists_of_names_only(apc_loads):
+def test_the_validation_functions_take_lists_of_names_only(apce):
     from propmap import validation as v
 
-    prop, data = apc_loads
+    prop, data = apce
     g = pm.generic_params()
     with pytest.raises(ValueError, match=r"protocols must be a list of names, got 'blind' \(give \['blind'\]\)"):
         v.cross_validate(data, prop, g, protocols="blind")  # (read as b, l, i, n, d)

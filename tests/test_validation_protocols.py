@@ -9,7 +9,6 @@ import math
 import numpy as np
 import pytest
 import propmap as pm
-from propmap.identify import loads_from_catalogue
 from propmap.identify.load_data import LoadData
 from propmap.io.calibration import generic_params
 from propmap.validation import coefficient_errors, cross_validate, holdout_loads, rpm_groups
@@ -34,12 +33,6 @@ def test_rpm_groups_lowest_first_within_three_percent_of_the_groups_first():
     # but 5.3% above the group's lowest, 3000: a group of its own; 5000 its own; lowest first.
     d = _synthetic({"c": 5000.0, "a": 3000.0, "b": 3080.0, "x": 3160.0})
     assert rpm_groups(d) == [["a", "b"], ["x"], ["c"]]
-
-
-@pytest.fixture(scope="module")
-def apce():
-    prop = pm.load_propeller("apce_8x6")
-    return prop, loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
 
 
 def test_split_invariants(apce):
