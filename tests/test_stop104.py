@@ -439,3 +439,50 @@ def test_fit_flight_warns_where_its_speed_figure_has_nothing_to_draw(apc8x6, apc
     assert not (tmp_path / "f.speed.png").exists()
     samples.speed = np.full(n, 2.5)
     assert figures(tmp_path / "g.png") == (".png", ".speed.png") and (tmp_path / "g.speed.png").exists()
+
+
+# ---- a mutation audit of this stop's figure checks: the cases its survivors showed untested --------------------------
+
+def test_the_figure_checks_edges(tmp_path, small_map):
+    from types import SimpleNamespace
+
+    import pandas as pd
+    import xarray as xr
+
+    table = pd.DataFrame({"airspeed": [0.0, 5.0], "incidence_deg": [90.0, 90.0], "thrust": [2.0, 2.1],
+                          "drag": [0.0, 0.1], "thrust_hover": [np.inf, 1.0]})
+    with pytest.raises(ValueError, match=r"largest \|thrust_hover\| must be finite and > 0, got inf"):
+        plots.plot_envelope(table, tmp_path / "e.png")
+    a, b = SimpleNamespace(run_id="a"), SimpleNamespace(run_id="b")
+    with pytest.raises(ValueError, match=r"got 2 and 2 runs \(a, b; b, a\)"):  # (the same runs in another order)
+        plots.plot_load_fit([a, b], [b, a], set(), tmp_path / "l.png")
+    with pytest.raises(ValueError, match="holdout must be a set of run ids"):
+        plots.plot_load_fit([a], [a], {1}, tmp_path / "l.png")
+    with pytest.raises(ValueError, match="none measured"):
+        plots.plot_load_parity(SimpleNamespace(measured={}), {"fitted": {}}, np.zeros(0, bool), tmp_path / "p.png")
+    rows = [{"blind": {"rms_ct": np.inf, "rms_cp": 0.03}}]
+    with pytest.raises(ValueError, match="1 rms errors not finite and positive"):
+        plots.plot_cv_summary({"summary": {"blind": {}}, "propellers": rows}, tmp_path / "c.png")
+    ds = small_map[2]
+    lo, hi = float(ds["rpm"].min()), float(ds["rpm"].max())
+    plots.plot_map_contours(ds, lo * (1 - 1e-12), tmp_path / "lo.png")  # (an end node to round-off, both ends)
+    with pytest.raises(ValueError, match="rpm must lie within the map's rpm axis"):
+        plots.plot_map_contours(ds, hi * 1.001, tmp_path / "m.png")  # (beyond round-off: refused)
+    with pytest.raises(TypeError, match="ds must be a map"):
+        plots.plot_map_contours(xr.Dataset({"thrust": ("x", [1.0])}), 6000.0, tmp_path / "m.png")  # (no rpm axis)
+    with pytest.raises(ValueError, match=r"speed: give speeds \[m/s\] in \[0, 1000\], got 1 to 1001"):
+        plots_flight.plot_flight_speed([1.0, 1.0, 1001.0], _loads(3), _loads(3), {"m": np.zeros(3)},
+                                       tmp_path / "s.png")
+    data = SimpleNamespace(airspeed=np.array([1.0, 2.0]), pitch=np.zeros(2))
+    forces = {"thrust": np.ones((2, 4)), "drag": np.ones((2, 4)), "torque": np.ones((2, 4)), "vertical": np.ones(2)}
+    for change, hover, weight, said in [
+        ({"thrust": np.ones((3, 4))}, np.ones(2), 10.0, r"forces\['thrust'\] must have shape \(2, n_rotors\)"),
+        ({}, np.ones(3), 10.0, r"hover_vertical must have shape \(2,\)"),
+        ({}, np.ones(2), np.ones(3), r"weight be finite, of shape \(\) or \(2,\)"),
+    ]:
+        with pytest.raises(ValueError, match=said):
+            plots_flight.plot_level_flight_fit(data, {**forces, **change}, hover, weight, tmp_path / "l.png")
+    good = {"log": np.zeros((5, 3))}
+    with pytest.raises(ValueError, match="t_by_log must be a dict of at least one log name"):
+        plots_flight.plot_flight_timeseries([np.zeros(5)], good, good, tmp_path / "f.png")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["lo.png"]
