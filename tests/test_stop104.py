@@ -486,3 +486,54 @@ def test_the_figure_checks_edges(tmp_path, small_map):
     with pytest.raises(ValueError, match="t_by_log must be a dict of at least one log name"):
         plots_flight.plot_flight_timeseries([np.zeros(5)], good, good, tmp_path / "f.png")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["lo.png"]
+
+
+def test_the_remaining_checks_a_mutation_audit_found_untested(tmp_path, capsys, apce, shared_data):
+    """Survivors of the mutation audit of this stop's change, each killed by one line here."""
+    import dataclasses
+    import shutil
+
+    from propmap import validation as v
+    from propmap.cases_gill2019 import gill2019_loads
+    from propmap.cli._common import _catalogue_geometry
+    from propmap.simexport import export_sim, write_export
+
+    good = {"log": np.zeros((5, 3))}
+    with pytest.raises(ValueError, match="needs a body force of shape"):  # (a time that is no 1-D array)
+        plots_flight.plot_flight_timeseries({"log": 0.5}, good, good, tmp_path / "f.png")
+    # the same diameter with another blade and count is another propeller, not another hub
+    other = dataclasses.replace(pm.load_propeller("apce_8x8"), n_blades=3)
+    assert _catalogue_geometry("apce_8x6", other) is False
+    # the 2-blade hub's own UIUC runs given as files with the 3-blade geometry: not the owner's residual
+    runs = sorted(str(p) for pattern in ("da4022_5x3.75_0*.txt", "da4022_5x3.75_static_*.txt")
+                  for p in (shared_data / "uiuc_propdb/v2").glob(pattern))
+    assert len(runs) == 5  # (its static run and four sweeps)
+    code, out, _ = run(capsys, "validate", *runs, "--prop", "da4022_5x3.75_3b", "--params", "generic")
+    assert code == 0 and "in-sample" not in out and "(fitted)" not in out
+    # write_export: an output named by neither label, and free text as a label, are written again
+    prop = pm.load_propeller("apce_8x6")
+    res = export_sim("rotorpy", prop, pm.generic_params(), n_points=50, seed=0)
+    veh_file = tmp_path / "quad.toml"
+    shutil.copy(pm.__path__[0] + "/data/examples/quadrotor.toml", veh_file)
+    for _ in range(2):
+        write_export(res, tmp_path / "r.py", vehicle_label=str(veh_file), airframe_label="the [body] table of x")
+        write_export(res, tmp_path / "s.py", vehicle_label="my quad")
+    report_named = tmp_path / "c.report.json"
+    shutil.copy(veh_file, report_named)
+    with pytest.raises(ValueError, match="the file the vehicle or airframe came from"):  # (its report would be it)
+        write_export(res, tmp_path / "c.py", vehicle_label=str(report_named))
+    with pytest.raises(ValueError, match="the file the vehicle or airframe came from"):
+        write_export(res, veh_file, airframe_label=str(veh_file))
+    assert report_named.read_bytes() == veh_file.read_bytes()
+    assert gill2019_loads("apce_8x6", [100.0]).n == 43  # (the range's ends are in it)
+    g = pm.generic_params()
+    with pytest.raises(TypeError, match="data must be a propmap LoadData"):
+        v.cross_validate(None, prop, g)
+    with pytest.raises(ValueError, match="folds must be a list of one boolean training mask per fold"):
+        v.holdout_loads(apce[1], prop, g, 5)
+    entry = pm.catalogue()["apce_8x6"]
+    one = entry.sweeps()[0].run_id
+    coarse = pm.Discretization(12, 8)
+    assert v.holdout_comparison(entry, prop, g, g, one, discretization=coarse)["holdout"] == [one]  # (not split)
+    with pytest.raises(ValueError, match="holdout: none given"):
+        v.holdout_comparison(entry, prop, g, g, [], discretization=coarse)
