@@ -537,3 +537,29 @@ def test_the_remaining_checks_a_mutation_audit_found_untested(tmp_path, capsys, 
     assert v.holdout_comparison(entry, prop, g, g, one, discretization=coarse)["holdout"] == [one]  # (not split)
     with pytest.raises(ValueError, match="holdout: none given"):
         v.holdout_comparison(entry, prop, g, g, [], discretization=coarse)
+
+
+def test_the_fit_commands_last_line_names_the_figures_a_figure_function_wrote(tmp_path, capsys):
+    """_write_outputs takes the suffixes a figure function returns (fit flight's, without its speed figure where
+    that has nothing to draw), and keeps its own where the function returns something else (a Path)."""
+    from dataclasses import dataclass, field
+
+    from propmap.cli.fit import _write_outputs
+
+    @dataclass
+    class Result:  # (what _write_outputs reads of a fit's result)
+        params: object = field(default_factory=pm.generic_params)
+        air: object = field(default_factory=pm.Air)
+        warnings: tuple = ()
+
+        def to_dict(self):
+            return {"kind": "test"}
+
+        def report_text(self):
+            return "a report"
+
+    for returned, said in (((".png",), "f.report.txt, f.png\n"), (None, "f.report.txt, f.png, f.speed.png\n"),
+                           (tmp_path / "f.png", "f.report.txt, f.png, f.speed.png\n")):
+        _write_outputs(Result(), tmp_path / "f.toml", "generic", False, figure=lambda png: returned,
+                       figure_suffixes=(".png", ".speed.png"))
+        assert capsys.readouterr().err.endswith(said)
