@@ -77,11 +77,11 @@ def _format(path) -> str:
     one of :data:`FIGURE_FORMATS` (a ``.jpg`` got PNG bytes under its name until stop 104), a path
     that names no file or a folder (found after drawing until then), TypeError for a path that
     is not one (pathlib's words, naming nothing, until then)."""
-    as_path(path, "path")
+    p = as_path(path, "path")
     check_file_name(path)  # (the path as given: a Path drops a trailing separator, "new.png/")
-    if Path(path).is_dir():
+    if p.is_dir():
         raise ValueError(f"path {os.fspath(path)!r:.200} is a folder: give the figure's file")
-    fmt = Path(path).suffix.lower().lstrip(".")
+    fmt = p.suffix.lower().lstrip(".")
     if fmt not in FIGURE_FORMATS:
         raise ValueError(f"path {str(path)!r:.200}: a figure's extension gives its format, one of "
                          f"{', '.join('.' + f for f in FIGURE_FORMATS)}; got {('.' + fmt) if fmt else 'none'}")
@@ -254,8 +254,8 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
         raise ValueError(f"runs_fitted and runs_baseline must be the same runs in one order, at least one; got "
                          f"{len(runs_fitted)} and {len(runs_baseline)} runs ({', '.join(ids[0][:4])}; "
                          f"{', '.join(ids[1][:4])})")
-    if isinstance(holdout, (str, bytes)) or not hasattr(holdout, "__iter__") or not all(isinstance(h, str)
-                                                                                          for h in holdout):
+    ids_given = hasattr(holdout, "__iter__") and not isinstance(holdout, (str, bytes))
+    if not ids_given or not all(isinstance(h, str) for h in holdout):
         raise ValueError(f"holdout must be a set of run ids (str), got {holdout!r:.60}")
     fig, axes = _figure(1, 2, (11, 4.2))
     colors = _colors()

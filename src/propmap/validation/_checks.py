@@ -43,16 +43,15 @@ def check_inputs(propeller, params: dict, *, data=_GIVEN_NONE, entry=_GIVEN_NONE
         _check_params(p, name)
 
 
-def check_names(name: str, values, valid=None) -> list[str]:
+def check_names(name: str, values) -> list[str]:
     """``values`` as a list of str (one str is refused: "blind" was read as b, l, i, n, d), not
-    empty, each in ``valid`` where given; ValueError naming ``name`` otherwise.
+    empty; ValueError naming ``name`` otherwise (whether each names something is the caller's).
 
     Parameters
     ----------
     name : str
         The argument's name.
     values : iterable of str
-    valid : sequence of str, optional
 
     Returns
     -------
@@ -61,14 +60,13 @@ def check_names(name: str, values, valid=None) -> list[str]:
     Raises
     ------
     ValueError
-        One str, not an iterable, an empty one, an item that is not a str or not valid.
+        One str, not an iterable, an empty one, or an item that is not a str.
     """
     if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
         raise ValueError(f"{name} must be a list of names, got {values!r:.60}" +
                          (f" (give [{values!r}])" if isinstance(values, str) else ""))
     out = list(values)
-    bad = [v for v in out if not isinstance(v, str) or (valid is not None and v not in valid)]
+    bad = [v for v in out if not isinstance(v, str)]
     if not out or bad:
-        raise ValueError(f"{name}: " + (f"unknown {', '.join(map(repr, bad[:5]))}" if bad else "none given")
-                         + (f"; valid: {', '.join(valid)}" if valid is not None else ""))
+        raise ValueError(f"{name}: " + (f"unknown {', '.join(map(repr, bad[:5]))}" if bad else "none given"))
     return out

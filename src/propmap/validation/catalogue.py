@@ -12,8 +12,8 @@ from ..core.airfoil import Air, SectionParams
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
 from ..identify._checks import boolean_mask
-from ._checks import check_inputs, check_names
 from ..identify.load_data import STATIC_AIRSPEED, LoadData
+from ._checks import check_inputs, check_names
 
 __all__ = ["PROTOCOLS", "PROTOCOL_TEXT", "coefficient_errors", "cross_validate", "rpm_groups"]
 

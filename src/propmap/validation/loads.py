@@ -70,8 +70,7 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
 
     check_inputs(propeller, {"base": base}, data=data)
     air = model_air(base, air, name="base")
-    folds = list(folds) if hasattr(folds, "__iter__") else folds
-    if not isinstance(folds, list) or not folds:  # ([] met NumPy's "need at least one array to concatenate")
+    if not hasattr(folds, "__iter__") or not (folds := list(folds)):  # ([] met NumPy's "need at least one array")
         raise ValueError(f"folds must be a list of one boolean training mask per fold, at least one, got "
                          f"{folds!r:.60}")
     missing = [k for k in ("thrust", "drag", "torque") if k not in data.measured]
