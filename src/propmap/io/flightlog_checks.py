@@ -324,11 +324,14 @@ def _derivative_ratio(log: FlightLog, values: np.ndarray, logged: np.ndarray, ju
         return None
     d = (values[k:] - values[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
     means = _window_means(log.t, logged, k)
+    n_kept = d.size
     if calm is not None:  # (the windows holding a sample not calm left out)
         inside = np.concatenate([np.zeros((1, calm.shape[1]), int), np.cumsum(~calm, axis=0)])
         keep = inside[k + 1:] - inside[:-k - 1] == 0
         d, means = np.where(keep, d, 0.0), np.where(keep, means, 0.0)
-    if np.sqrt(np.mean(d**2)) < judged:
+        n_kept = int(np.count_nonzero(keep))
+    # (the rms over the windows kept: the left-out ones' zeros diluted it, so a log with many spikes went unjudged)
+    if n_kept == 0 or np.sqrt(np.sum(d**2) / n_kept) < judged:
         return None
     ld, dd, ll = float(np.sum(means * d)), float(np.sum(d * d)), float(np.sum(means * means))
     lo, hi = ANGULAR_ACCELERATION_RATIO
