@@ -24,3 +24,87 @@ def test_a_motor_acceleration_is_judged_over_the_windows_kept_only():
     acc[log.t < 3.0, :] = 0.0
     with pytest.raises(FlightLogError, match=r"motor 1's logged acceleration is 9.5\d times .* in rpm/s"):
         _check(dataclasses.replace(log, rotor_omega=1100.0 + 3.0 * np.sin(phase), rotor_acceleration=acc))
+
+
+# ---- thrust-stand exports (identify/steps.py, loads_csv.py, headers.py; an export audit of this stop) ---------------
+def _stand_log(path, header, *, up=0, down=0, rate=25.0):
+    """A steps test at 40 Hz: 7 steps of 12 rows, 1150-1750 us and 3000-9000 rpm, thrust 6.8e-8 rpm^2 N and
+    torque 1.36e-9 rpm^2 N m (an APC 8x6E's order), with ``up`` ramp rows from idle before the first step and
+    ``down`` after the last (``rate`` us a row, the load following the speed), between motor-stopped rows."""
+    rows = [(1000.0, 0.0)] * 4
+    rows += [(1150.0 - rate * (up - k), 3000.0 - 250.0 * (up - k)) for k in range(up)]
+    for k in range(7):
+        rows += [(1150.0 + 100 * k, 3000.0 + 1000 * k)] * 12
+    rows += [(1750.0 - rate * (k + 1), 9000.0 - 250.0 * (k + 1)) for k in range(down)]
+    rows += [(1000.0, 0.0)] * 4
+    lines = [",".join(header)]
+    for i, (esc, rpm) in enumerate(rows):
+        lines.append(f"{i / 40:.3f},{esc:.0f},{-1.36e-9 * rpm**2:.6g},{6.8e-8 * rpm**2:.6g},{rpm:.0f}")
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+HEADER = ["Time (s)", "ESC signal (µs)", "Torque (N·m)", "Thrust (N)", "Motor Optical Speed (RPM)"]
+
+
+@pytest.mark.parametrize("up, down", [(0, 0), (6, 0), (0, 28), (6, 28)])
+def test_the_ramps_up_from_idle_and_back_to_it_are_no_points(tmp_path, up, down):
+    """A steps test's ramps at the rows' ends (the stopped rows skipped) are transients: 7 points for 7 steps with
+    or without them (the ramp back to idle made 35 points of 7 steps, the ramp up 11, each ramp row a point)."""
+    from propmap.identify import read_loads
+
+    data = read_loads(_stand_log(tmp_path / "s.csv", HEADER, up=up, down=down))
+    assert data.n == 7
+    np.testing.assert_allclose(data.omega * 60 / (2 * math.pi), np.arange(3000, 9001, 1000), rtol=1e-9)
+    assert any(f"{84 + up + down} rows averaged into 7 ESC steps" in n for n in data.notes), data.notes
+
+
+def test_a_ramp_at_the_end_that_rises_stays_points(tmp_path):
+    """Short steps after the last long step that rise (a warm-up hold, then a table of short steps) are no ramp to
+    idle: the end rule takes only a monotone fall (here 1 + 10 points: the 7 steps' last one held, then 10 single
+    rows rising 25 us each)."""
+    from propmap.identify import read_loads
+
+    path = _stand_log(tmp_path / "s.csv", HEADER)
+    lines = path.read_text(encoding="utf-8").splitlines()[:-4]  # (the stopped rows at the end dropped)
+    lines += [f"{3 + k / 40:.3f},{1775 + 25 * k},{-1.36e-9 * (9250 + 250 * k)**2:.6g},"
+              f"{6.8e-8 * (9250 + 250 * k)**2:.6g},{9250 + 250 * k}" for k in range(10)]
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    assert read_loads(path).n == 17
+
+
+def test_tytos_pwm_throttle_signal_is_the_esc_signal(tmp_path):
+    """'PWM throttle signal (µs)' (Tyto Robotics' database exports) is read as the ESC signal: its rows are
+    averaged into steps, not each fitted as a point (84 points, settling rows included)."""
+    from propmap.identify import read_loads
+
+    header = ["Time (s)", "PWM throttle signal (µs)", "Torque (N⋅m)", "Thrust (N)", "Rotation speed (rpm)"]
+    data = read_loads(_stand_log(tmp_path / "t.csv", header, down=5))
+    assert data.n == 7
+
+
+def test_a_makers_power_column_is_named_as_electrical_not_as_the_torque(tmp_path):
+    """A bare 'Power (W)' beside voltage and current (a motor maker's table) is likely the electrical V I: the note
+    says that Q = P / Omega needs the shaft power (it advised Q = P / Omega for it)."""
+    from propmap.identify import read_loads
+
+    path = tmp_path / "m.csv"
+    rows = [f"{30 + 10 * k},{6.8e-8 * (3000 + 1000 * k)**2 / 9.80665e-3:.1f},{3000 + 1000 * k},16.6,{1 + k},"
+            f"{16.6 * (1 + k):.2f}" for k in range(7)]
+    path.write_text("Throttle (%),Thrust (g),RPM,Voltage (V),Current (A),Power (W)\n" + "\n".join(rows) + "\n")
+    notes = read_loads(path).notes
+    assert any("'Power (W)' is not read: propmap fits a torque column, Q = P / Omega with P the shaft (mechanical) "
+               "power, not the electrical V I" in n and "likely the electrical one" in n for n in notes), notes
+
+
+def test_a_stand_export_without_any_rotation_speed_names_both_columns(tmp_path):
+    """Both of the stand's speed columns 0 in every row (no probe, no telemetry): the refusal names both."""
+    from propmap.identify import DataError, read_loads
+
+    header = ["Time (s)", "ESC signal (µs)", "Torque (N·m)", "Thrust (N)", "Motor Electrical Speed (RPM)",
+              "Motor Optical Speed (RPM)"]
+    lines = [",".join(header)] + [f"{k / 40:.3f},{1150 + 100 * (k // 12)},-0.02,1.0,0,0" for k in range(84)]
+    (tmp_path / "z.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    with pytest.raises(DataError, match=r"'Motor Electrical Speed \(RPM\)' is empty or 0 in every row, and so is "
+                                        r"'Motor Optical Speed \(RPM\)': no rotation speed was recorded"):
+        read_loads(tmp_path / "z.csv")

@@ -26,7 +26,9 @@ INCH = 0.0254
 _ESC_UNITS = {"us": "us", "microseconds": "us", "microsecond": "us", "%": "pct", "pct": "pct", "percent": "pct"}
 #: other names of the ESC signal, read where no 'ESC signal' or 'throttle' column is ('PWM (µs)' was left unread and
 #: every raw sample of a steps test fitted as a point: a thrust-stand export audit, 2026-11-27)
-_ESC_ALIASES = ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc pulse width", "throttle signal")
+_ESC_ALIASES = ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc pulse width", "throttle signal",
+                # (Tyto's database exports: 'PWM throttle signal (µs)' was left unread, an export audit, 2026-12-02)
+                "pwm throttle signal", "pwm throttle")
 #: other names of the thrust, read where no 'thrust' column is (beside one, with a note that they are not read)
 _THRUST_ALIASES = ("static thrust", "average thrust", "avg thrust", "avg. thrust", "mean thrust", "thrust avg",
                    "thrust average", "thrust mean")

@@ -272,8 +272,14 @@ def _power_note(header, cm, notes: list) -> None:
     power = [c for c in header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
              in ("power", "shaft power", "mechanical power", "power w", "shaft power w", "mechanical power w")]
     if power and "torque" not in cm.columns:
-        notes.append(f"{power[0]!r} is not read: propmap fits a torque column, Q = P / Omega (give it so, and the "
-                     "fit uses the torque too)")
+        bare = power[0].strip().lower().replace("_", " ").startswith("power")
+        # (a motor maker's 'Power (W)' is the electrical V I: a torque from it, as the note advised, was 1.43 times the
+        # shaft's and validated without a warning, an export audit, 2026-12-02)
+        electrical = bare and any(c.strip().lower().startswith(("voltage", "current")) for c in header)
+        notes.append(f"{power[0]!r} is not read: propmap fits a torque column, Q = P / Omega with P the shaft "
+                     "(mechanical) power, not the electrical V I, which holds the motor's and ESC's losses" + (
+                         f" ({power[0]!r} beside a voltage and a current is likely the electrical one)"
+                         if electrical else "") + "; give the torque so, and the fit uses it too")
 
 
 #: the loads a wind-tunnel balance gives besides the thrust, in-plane force, torque and rolling moment, which propmap
@@ -496,8 +502,12 @@ def _rotation_speed(v: dict, speeds: list, cm, rpm_source, pole_pairs, lines, wh
     if use == "rpm_optical" and rpm_source is None and "rpm_electrical" in v:
         rpm = _optical_gaps(rpm, v["rpm_electrical"], cm.column("rpm_optical"), notes)
     if rpm.size and not np.any(np.nan_to_num(rpm) != 0):
+        # (the stand's other speed column named too: an export without a probe, both 0, an export audit, 2026-12-02)
+        others = [cm.column(q) for q in speeds if q != use and not np.any(np.nan_to_num(v[q]) != 0)]
         raise DataError(f"{what}: {p}: the rotation speed column {cm.column(use)!r} is empty or 0 in every row"
-                        + (f" (chosen by rpm_source={rpm_source!r}, --rpm-source)" if rpm_source else ""))
+                        + (f" (chosen by rpm_source={rpm_source!r}, --rpm-source)" if rpm_source else "")
+                        + (f", and so is {', '.join(map(repr, others))}: no rotation speed was recorded (no optical "
+                           "probe, no ESC telemetry?); propmap needs it" if others else ""))
     for q in speeds:
         v.pop(q)
     v["rpm"] = rpm

@@ -258,9 +258,22 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
     condition and label, whose signals lie between the two's (each ramp row was a "step" of its
     own, taken with the motor still accelerating: 76 points from 16 steps in a thrust-stand
     export audit, 2026-11-27). Short steps anywhere else (an export that averaged its steps, a
-    tunnel run's short airspeed steps after a long static one) stay points."""
+    tunnel run's short airspeed steps after a long static one) stay points.
+
+    So are the ramps at the rows' ends (the stopped motor's rows skipped before), at the operating
+    condition and label of the step of five rows or more next to them: a run of two or more such
+    steps that begins the rows and whose signals rise monotonically to that step's (the ramp up
+    from idle), or that ends them and whose signals fall monotonically from it (the ramp back to
+    idle after a test; both were points, 28 of 35 points in a thrust-stand export audit's log of
+    7 steps, 2026-12-02). Short steps rising after the last long step (a warm-up hold, then a
+    table of short steps) stay points."""
     size = [b - a for a, b in steps]
     level = [float(np.median(esc[a:b])) for a, b in steps]
+
+    def same(first: int, last: int) -> bool:  # steps[first..last] at one label and operating condition
+        return ((labels is None or len({labels[steps[i][0]] for i in range(first, last + 1)}) == 1)
+                and all(_one_condition(x, steps[first:last + 1], q, cond_tol) for q, x in conditions.items()))
+
     out = set()
     j = 0
     while j < len(steps):
@@ -273,10 +286,14 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
         before, after = j - 1, end  # the long steps around the run [j, end)
         if before >= 0 and after < len(steps) and size[before] >= 5 and size[after] >= 5:
             lo, hi = sorted((level[before], level[after]))
-            same = ((labels is None or len({labels[steps[i][0]] for i in range(before, after + 1)}) == 1)
-                    and all(_one_condition(x, steps[before:after + 1], q, cond_tol) for q, x in conditions.items()))
-            if same and lo < hi and all(lo < level[i] < hi for i in range(j, end)):
+            if same(before, after) and lo < hi and all(lo < level[i] < hi for i in range(j, end)):
                 out.update(range(j, end))
+        elif end - j >= 2 and (j == 0) != (end == len(steps)):  # a run at the rows' start or end, not both
+            held = after if j == 0 else before  # the long step it ramps to or from
+            if 0 <= held < len(steps) and size[held] >= 5 and same(min(j, held), max(end - 1, held)):
+                path = [*level[j:end], level[held]] if j == 0 else [level[held], *level[j:end]]
+                if np.all(np.diff(path) > 0) if j == 0 else np.all(np.diff(path) < 0):  # (up from idle, down to it)
+                    out.update(range(j, end))
         j = end
     return out
 
