@@ -108,3 +108,17 @@ def test_a_stand_export_without_any_rotation_speed_names_both_columns(tmp_path):
     with pytest.raises(DataError, match=r"'Motor Electrical Speed \(RPM\)' is empty or 0 in every row, and so is "
                                         r"'Motor Optical Speed \(RPM\)': no rotation speed was recorded"):
         read_loads(tmp_path / "z.csv")
+
+
+def test_a_continuous_sweep_is_read_row_by_row_with_a_note(tmp_path):
+    """A signal that changes at every row (a sweep, 0.5 us a row, no held steps) is read as one point a row, and a
+    note says so (1,400 rows were fitted as points without a word)."""
+    from propmap.identify import read_loads
+
+    lines = [",".join(HEADER)] + [f"{k / 40:.3f},{1100 + 0.5 * k:.1f},{-1.36e-9 * (3000 + 5 * k)**2:.6g},"
+                                  f"{6.8e-8 * (3000 + 5 * k)**2:.6g},{3000 + 5 * k}" for k in range(60)]
+    (tmp_path / "w.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    data = read_loads(tmp_path / "w.csv")
+    assert data.n == 60
+    assert any("each of the 60 rows is a point: 'ESC signal (µs)' changes at every row (a continuous sweep"
+               in n for n in data.notes), data.notes
