@@ -122,3 +122,44 @@ def test_a_continuous_sweep_is_read_row_by_row_with_a_note(tmp_path):
     assert data.n == 60
     assert any("each of the 60 rows is a point: 'ESC signal (µs)' changes at every row (a continuous sweep"
                in n for n in data.notes), data.notes
+
+
+# ---- the held-out fits without the profile likelihood (identify/options.py, validation/loads.py) --------------------
+def test_profile_likelihood_off_keeps_the_linearised_interval_and_the_optimum():
+    """FitOptions(profile_likelihood=False): the fit of a saturating flap compliance (test_user_data_edges' case:
+    loads made with 20 rad/(N m), 0.5% noise; with the profile its interval reaches the bound 50 with a warning)
+    keeps the linearised interval and says nothing of the saturation, at the same optimum (15-40)."""
+    from test_user_data_edges import _incidence_data
+
+    import propmap as pm
+    from propmap.identify import FitOptions, fit_loads
+
+    prop, data = _incidence_data(20.0, 0.005, seed=2)
+    res = fit_loads(data, prop, base=pm.default_params("apce_10x7"), options=FitOptions(profile_likelihood=False))
+    j = res.names.index("flap_compliance")
+    assert 15.0 < res.x[j] < 40.0
+    assert not any("flap_compliance: the data hardly tell" in w or "saturates" in w for w in res.warnings), res.warnings
+    with pytest.raises(ValueError, match="profile_likelihood must be True or False, got 'no'"):
+        FitOptions(profile_likelihood="no")
+
+
+def test_holdout_loads_fits_without_the_profile_likelihood(monkeypatch):
+    """holdout_loads uses each fold's parameters only, so its fits skip the profile likelihood (2.7 times faster on
+    the four gill2019 propellers, the same errors)."""
+    from test_user_data_edges import _incidence_data
+
+    import propmap as pm
+    import propmap.identify
+    from propmap.validation import holdout_loads
+
+    seen = []
+
+    def spy(*args, options=None, **kwargs):
+        seen.append(options)
+        raise RuntimeError("spied")
+
+    monkeypatch.setattr(propmap.identify, "fit_loads", spy)
+    prop, data = _incidence_data(1.0, 0.002)
+    with pytest.raises(RuntimeError, match="spied"):
+        holdout_loads(data, prop, pm.default_params("apce_10x7"), [np.arange(data.n) % 2 == 0])
+    assert len(seen) == 1 and seen[0].profile_likelihood is False

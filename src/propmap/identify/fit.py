@@ -400,7 +400,8 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * data.n, air, extra)
     result = _traced_residuals(result, data, keys)
     if inplane:
-        result = _flap_articulated(_flap_saturation(result, make_residual(options), options))
+        result = _flap_articulated(_flap_saturation(result, make_residual(options), options)
+                                   if options.profile_likelihood else result)
     _warn_at_optimum(result, make_data, options)
     return result if k_dirs == 0 else _directions_report(result, options)
 

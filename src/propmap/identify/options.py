@@ -386,16 +386,23 @@ class FitOptions:
         fit's centre of mass through ``vehicle_wrench``'s "centre_of_mass" Jacobian), the
         body-lift closed form by central differences; else, and always with ``"differences"``,
         central differences of the solver.
+    profile_likelihood : bool
+        :func:`fit_loads` with the flap compliance fitted: where its linearised 95% interval
+        is too narrow (the flapping saturates), place its upper limit by the profile
+        likelihood, 1-7 refits of the other parameters (default True). False keeps the
+        linearised interval: for callers that use the fitted parameters only (the held-out
+        fits of :func:`propmap.validation.holdout_loads`, which it made 2.7 times slower).
 
     Raises
     ------
     ValueError
-        A ``lift_model``, ``jacobian`` or ``directions`` outside the values above;
-        ``max_nfev`` not an integer in [1, 1e7], ``multistart`` not one in [0, 256], ``seed``
-        not one >= 0; ``bounds`` not name -> (low, high) with finite low < high and a name
-        the fits know (a fitted parameter, or a number of the cambered set: not its label,
-        air, inflow model or switches); ``x0`` not four finite numbers; a ``population``
-        the prior cannot use (:func:`check_population`).
+        A ``lift_model``, ``jacobian`` or ``directions`` outside the values above, a
+        ``profile_likelihood`` not a bool; ``max_nfev`` not an integer in [1, 1e7],
+        ``multistart`` not one in [0, 256], ``seed`` not one >= 0; ``bounds`` not name ->
+        (low, high) with finite low < high and a name the fits know (a fitted parameter, or
+        a number of the cambered set: not its label, air, inflow model or switches); ``x0``
+        not four finite numbers; a ``population`` the prior cannot use
+        (:func:`check_population`).
     """
 
     x0: tuple = X0_PAPER
@@ -413,12 +420,15 @@ class FitOptions:
     discretization: Discretization = DEFAULT_DISCRETIZATION
     jacobian: str = "implicit"
     directions: int | None = None
+    profile_likelihood: bool = True
 
     def __post_init__(self) -> None:
         if self.lift_model not in LIFT_MODELS:
             raise ValueError(f"lift_model must be 'sigmoid' or 'sincos', got {self.lift_model!r:.40}")
         if self.jacobian not in ("implicit", "differences"):
             raise ValueError(f"jacobian must be 'implicit' or 'differences', got {self.jacobian!r:.40}")
+        if not isinstance(self.profile_likelihood, (bool, np.bool_)):
+            raise ValueError(f"profile_likelihood must be True or False, got {self.profile_likelihood!r:.40}")
         d = self.directions
         if d is not None and (isinstance(d, bool) or not isinstance(d, (int, np.integer)) or d < 0):
             raise ValueError(f"directions must be None or an integer >= 0, got {d!r:.40}")

@@ -23,7 +23,8 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
 
     Each fold's training points are fitted with :func:`propmap.identify.fit_loads` (from
     ``base``, under ``population``'s prior, ``names`` or the defaults, which free the flapping
-    where the data measure the in-plane force at incidence) and its held-out points predicted.
+    where the data measure the in-plane force at incidence; without the profile likelihood of
+    the flapping's interval, which the predictions do not use) and its held-out points predicted.
 
     Parameters
     ----------
@@ -92,7 +93,7 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
         if train.all() or not train.any():
             raise ValueError("every fold needs training and held-out points")
         p = fit_loads(data.subset(train), propeller, base=base, air=air, quantities=quantities,
-                      options=FitOptions(population=population, names=names)).params
+                      options=FitOptions(population=population, names=names, profile_likelihood=False)).params
         compliance.append(float(p.flap_compliance))
         r = rotor_loads(propeller, p, data.omega[~train], data.airspeed[~train], data.incidence[~train], air=air,
                         collective=None if data.collective is None else data.collective[~train])
