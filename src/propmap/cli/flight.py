@@ -236,7 +236,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     report["body_drag"] = res.extra.get("body_drag")
     if cross_validate:
         cv = _run_fit(cross_validate_flight, train, veh_in, base=base, air=air, options=opts, moments=moments)
-        report["cross_validation"] = cv
+        report["cross_validation"] = _cv_report(cv)
         if set(cv["folds"][0]["x"]) == set(res.names):  # (the report's jackknife column: the spread between logs)
             from ..identify.optimizer import _bounds
 
@@ -258,7 +258,13 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh, res.air), "data": "flight logs",
                 "groups": [n for n in names if n not in held], "held_out": sorted(held),
                 "files_sha256": file_digests([p for p, n in zip(log_paths, names) if n not in held])}
-    res = replace(res, warnings=res.warnings + tuple(_held_beyond(logs, held, coverage, veh, res.air)))
+    beyond = _held_beyond(logs, held, coverage, veh, res.air)
+    if cross_validate:  # (each fold's log against the other training logs: said for --holdout only, a docs audit)
+        kept = [lg for lg in logs if lg.name not in held]
+        for lg in kept:
+            beyond += _held_beyond([lg], {lg.name}, _flight_coverage([o for o in kept if o is not lg], veh, res.air),
+                                   veh, res.air, "cross-validation: the fold of")
+    res = replace(res, warnings=res.warnings + tuple(beyond))
     _write_outputs(res, out, base_label, as_json, "\n".join(text),
                    figure=_figures(samples, names, held, pred, baselines, veh, res.params, air, vehicle),
                    figure_suffixes=(".png", ".speed.png"), coverage=coverage,
@@ -388,12 +394,26 @@ def _flight_coverage(logs, veh, air) -> dict:
             **_vehicle_propeller(veh, float(np.min(s.rotor_omega)), float(np.max(s.rotor_omega)), air)}
 
 
-def _held_beyond(logs, held, coverage: dict, veh, air) -> list[str]:
+def _cv_report(cv: dict) -> dict:
+    """:func:`propmap.identify.flight.cross_validate_flight`'s result with the folds' parameters
+    and their jackknife std errors in the report's names and units (an angle as
+    ``collective_deg`` in deg, as the report's ``fitted``: they were in rad under the bare name
+    beside the report's degrees, a docs audit, 2026-12-02)."""
+    from ..identify.options import report_name, report_value
+
+    def named(x: dict) -> dict:
+        return {report_name(n): report_value(n, v) for n, v in x.items()}
+
+    folds = [{**f, "x": named(f["x"]), "at_bound": [report_name(n) for n in f["at_bound"]]} for f in cv["folds"]]
+    return {**cv, "folds": folds, "jackknife_std_error": named(cv["jackknife_std_error"])}
+
+
+def _held_beyond(logs, held, coverage: dict, veh, air, what: str = "held-out log") -> list[str]:
     """A warning per held-out log whose rotors go beyond what the training logs covered (the
     written file's [coverage]: airspeed, advance ratio, rpm), by `wrench --params`' margins
     (cli/_coverage: J_SLACK, RATE_SLACK, airspeed_beyond): its scores extrapolate the fit (said
     of none until 2026-11-30, where `wrench` with the written file warned of the same log: a
-    flight-log audit)."""
+    flight-log audit). ``what`` names the log in the warning (a cross-validation fold's)."""
     out = []
     for lg in logs:
         if lg.name not in held:
@@ -408,7 +428,7 @@ def _held_beyond(logs, held, coverage: dict, veh, air) -> list[str]:
                 f"{coverage['rpm_max']:.0f})" if (c["rpm_max"] > coverage["rpm_max"] * (1 + RATE_SLACK)
                                                   or c["rpm_min"] < coverage["rpm_min"] * (1 - RATE_SLACK)) else ""]
         if any(over):
-            out.append(f"held-out log {lg.name} reaches {', '.join(o for o in over if o)}: its scores extrapolate "
+            out.append(f"{what} {lg.name} reaches {', '.join(o for o in over if o)}: its scores extrapolate "
                        "the fit beyond the flights it saw")
     return out
 
