@@ -163,3 +163,17 @@ def test_holdout_loads_fits_without_the_profile_likelihood(monkeypatch):
     with pytest.raises(RuntimeError, match="spied"):
         holdout_loads(data, prop, pm.default_params("apce_10x7"), [np.arange(data.n) % 2 == 0])
     assert len(seen) == 1 and seen[0].profile_likelihood is False
+
+
+def test_a_maps_flags_say_what_their_values_mean(small_map, tmp_path):
+    """The map file's flag variables carry the CF conventions' flag_values and flag_meanings (a reader without xarray
+    saw int8 0/1 with a long_name only)."""
+    import xarray as xr
+
+    from propmap.io.mapfile import write_map
+
+    write_map(small_map[2], tmp_path / "m.nc")
+    with xr.open_dataset(tmp_path / "m.nc") as ds:
+        for f in ("converged", "vortex_ring", "multiple_roots", "reverse_flow"):
+            attrs = ds[f].attrs
+            assert list(attrs["flag_values"]) == [0, 1] and attrs["flag_meanings"] == f"not_{f} {f}", attrs

@@ -382,7 +382,10 @@ def _dataset(result, loads, om, V, b, propeller, params, air, discretization, pa
     data["CP"] = (dims, data["power"][1] / (air.rho * n**3 * propeller.diameter**5),
                   {"units": "1", "long_name": LONG_NAMES["CP"]})
     for i, f in enumerate(FLAGS):
-        data[f] = (dims, result[len(loads) + i] != 0, {"long_name": f"model flag {f} (docs/solver.md)"})
+        # (the CF conventions' flag attributes, so that the file says what its 0 and 1 mean: a docs audit, 2026-12-02)
+        data[f] = (dims, result[len(loads) + i] != 0, {"long_name": f"model flag {f} (docs/solver.md)",
+                                                       "flag_values": np.array([0, 1], np.int8),
+                                                       "flag_meanings": f"not_{f} {f}"})
     coords = {"rpm": ("rpm", _rounded(om / RPM), {"units": "rpm", "long_name": "rotation rate"}),
               "airspeed": ("airspeed", V, {"units": "m/s", "long_name": "speed of the disk relative to the air"}),
               "incidence_deg": ("incidence_deg", _rounded(np.degrees(b)),
