@@ -3,6 +3,7 @@ flight logs (NeuroBEM's layout); the catalogue's APC 8x6E (APC PE0 geometry)."""
 
 import dataclasses
 import math
+import re
 
 import numpy as np
 import pytest
@@ -177,3 +178,44 @@ def test_a_maps_flags_say_what_their_values_mean(small_map, tmp_path):
         for f in ("converged", "vortex_ring", "multiple_roots", "reverse_flow"):
             attrs = ds[f].attrs
             assert list(attrs["flag_values"]) == [0, 1] and attrs["flag_meanings"] == f"not_{f} {f}", attrs
+
+
+# ---- wind-tunnel files at incidence (identify/unread.py; a wind-tunnel data audit of this stop) ---------------------
+def _tunnel(tmp_path, header, rows=None):
+    rows = rows or [(5000, 0.0, 0.0, 3.9, 0.074), (5000, 10.0, 90.0, 4.3, 0.081), (6000, 5.0, 45.0, 5.4, 0.10)]
+    (tmp_path / "w.csv").write_text(",".join(header) + "\n" + "\n".join(",".join(map(str, r)) for r in rows) + "\n")
+    return tmp_path / "w.csv"
+
+
+@pytest.mark.parametrize("angle", ["alpha_angle", "tilt_angle", "shaft_angle", "theta", "wind_angle", "alpha_prop",
+                                   "prop angle", "propeller_angle (deg)"])
+def test_an_unread_angle_beside_an_airspeed_is_refused(tmp_path, angle):
+    """Beside an airspeed, a column with a flow angle's word that propmap does not read is refused (TU Delft's
+    'alpha_angle' with the loads renamed: every point read as axial, 28% thrust error, exit 0)."""
+    from propmap.identify import DataError, read_loads
+
+    path = _tunnel(tmp_path, ["rpm", "airspeed", angle, "thrust", "torque"])
+    with pytest.raises(DataError, match=rf"column '{re.escape(angle)}' looks like a flow angle, which propmap reads "
+                                        r"only as 'incidence_deg'"):
+        read_loads(path)
+
+
+def test_a_blade_pitch_beside_an_airspeed_is_still_refused_as_a_pitch(tmp_path):
+    from propmap.identify import DataError, read_loads
+
+    with pytest.raises(DataError, match=r"column 'pitch_angle' looks like a blade pitch setting"):
+        read_loads(_tunnel(tmp_path, ["rpm", "airspeed", "pitch_angle", "thrust", "torque"]))
+
+
+def test_a_balances_moment_is_named_and_its_axis_components_explained(tmp_path):
+    """'Mz (ft-lb)' beside a thrust without a torque is named in a note; a file of Fx, Fz and Mz alone is refused
+    saying that the loads are read in the rotor's axes (it was told 'no load column' only)."""
+    from propmap.identify import DataError, read_loads
+
+    data = read_loads(_tunnel(tmp_path, ["rpm", "airspeed", "incidence_deg", "Thrust (N)", "Mz (ft-lb)"]), min_points=1)
+    assert any("column(s) 'Mz (ft-lb)' (a moment) not read: if one is the moment about the rotor axis, name it "
+               "'torque'" in n for n in data.notes), data.notes
+    with pytest.raises(DataError, match=r"no load column: .*'Fx \(N\)', 'Fz \(N\)', 'Mz \(N m\)' look like a balance's "
+                                        r"axis components: propmap reads the loads in the rotor's axes"):
+        read_loads(_tunnel(tmp_path, ["rpm", "airspeed", "incidence_deg", "Fx (N)", "Fz (N)", "Mz (N m)"]),
+                   min_points=1)

@@ -44,7 +44,7 @@ from ..core._numbers import integer
 # import from here are re-exported)
 from .headers import (G0, INCH, LBF, LOOKED_FOR, OPERATING, ROTATION_COLUMNS, UNITS, ColumnMap, _entry, _factor,
                       _name_stems, _RANK, _token, split_header)
-from .unread import (_note_unread_force, _refuse_no_load, _refuse_no_speed, _refuse_pitch_like,
+from .unread import (_note_unread_force, _note_unread_moment, _refuse_no_load, _refuse_no_speed, _refuse_pitch_like,
                      _refuse_unread_flow, _refuse_wind_axes_and_rates)
 
 __all__ = ["ColumnMap", "map_columns", "map_operating_columns", "split_header", "UNITS", "ROTATION_COLUMNS",
@@ -147,13 +147,15 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
              if u is None or _token(u) in UNITS["speed"] or _token(u) in UNITS["angle"]}
     stems = {name: _name_stems(name) for name in bases}
     if not any(q in cm.columns for q in ("thrust", "torque", "drag")):
-        _refuse_no_load(bases, found, error)
+        _refuse_no_load(bases, split, found, error)
     _refuse_wind_axes_and_rates(cm, split, bases, stems, error)
     _refuse_unread_flow(cm, split, bases, stems, error)
     if "collective_deg" not in cm.columns:
         _refuse_pitch_like(names, error)
     if "thrust" not in cm.columns or ("drag" not in cm.columns and "airspeed" in cm.columns):
         _note_unread_force(cm, split)
+    if "torque" not in cm.columns:
+        _note_unread_moment(cm, split)
     if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
         raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
                     f"found {found}")

@@ -50,6 +50,10 @@ _AMBIGUOUS = {"v": "airspeed", "vd": "airspeed", "j": "airspeed", "mu": "airspee
               "disc tilt": "incidence_deg", "rotor tilt": "incidence_deg", "shaft tilt": "incidence_deg",
               "inclination": "incidence_deg",
               "yaw": "incidence_deg", "yaw angle": "incidence_deg"}
+#: a balance's axis components (Fx, F_z, Mz, force x), which give the loads only resolved in the rotor's axes
+_BODY_COMPONENT = re.compile(r"(f|force|m|moment) ?[xyz]")
+#: words of a flow angle's name (beside an airspeed an unread column so named is refused: _refuse_unread_flow)
+_ANGLE_WORDS = re.compile(r"\b(angle|alpha|aoa|tilt|theta|beta|inclination|incidence)\b")
 _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
 #: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
 #: propeller); a unit 'kN' is a force (kilonewton), not knots
@@ -87,7 +91,7 @@ def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
     raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
 
 
-def _refuse_no_load(bases: dict, found: str, error) -> None:
+def _refuse_no_load(bases: dict, split: dict, found: str, error) -> None:
     """map_columns without a thrust, torque or drag column: refused, naming coefficient columns
     (CT, CP) where they stand instead."""
     coeff = [n for n, b in bases.items() if b in _loose(_COEFFICIENT_NAMES)]
@@ -95,7 +99,15 @@ def _refuse_no_load(bases: dict, found: str, error) -> None:
         raise error(f"no load column, but coefficient column(s) {', '.join(map(repr, coeff))}: a CSV gives the "
                     "loads in SI (thrust = CT rho n^2 D^4, torque = CP rho n^2 D^5 / (2 pi), airspeed = J n D); "
                     "UIUC-format files (RPM CT CP static runs, J CT CP eta sweeps) are read as they are")
-    raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}")
+    # a balance's body-axis components (Fx, Fz, Mz) give the loads once resolved in the rotor's axes: said how (they
+    # were told "no load column" only, a wind-tunnel data audit, 2026-12-02)
+    body = [n for n, (b, _) in split.items() if _BODY_COMPONENT.fullmatch(b.replace("_", " "))]
+    raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}" + (
+        f"; {', '.join(map(repr, body[:3]))} look like a balance's axis components: propmap reads the loads in the "
+        "rotor's axes, 'thrust' the force along the rotor axis in its direction (-Fz where z points against the "
+        "thrust, as a z-down frame's), 'drag' the in-plane "
+        "force along the in-plane airspeed and 'torque' the moment about the axis: write those columns, resolved so "
+        "(docs/conventions.md)" if body else ""))
 
 
 def _refuse_wind_axes_and_rates(cm: ColumnMap, split: dict, bases: dict, stems: dict, error) -> None:
@@ -178,6 +190,12 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
             like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and "_" in b
                      and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like
                      and not re.search(r"temp", b)]  # (temp_deg, motor_temp_degrees: a temperature)
+            # an angle's word in a name without a unit or in an angle's (alpha_angle, tilt_angle, theta, wind_angle,
+            # alpha_prop were left unread beside an airspeed, every point axial: 28% thrust error, exit 0, a wind-tunnel
+            # data audit, 2026-12-02); a blade pitch's name is refused as such after this
+            like += [n for n, (b, u) in split.items() if b not in _NAMES and n not in like
+                     and (u is None or _token(u) in UNITS["angle"]) and _ANGLE_WORDS.search(b.replace("_", " "))
+                     and not (_name_stems(n) | {b}) & _loose(_PITCH_LIKE)]
         if like:
             joule = " (an energy in joules: give its unit, 'energy (J)')" if like[0].strip().lower() == "j" else ""
             unit = split[like[0]][1] if like[0] in split else None
@@ -237,6 +255,17 @@ def _note_unread_force(cm: ColumnMap, split: dict) -> None:
                         "force) with its unit to fit it; without a thrust column "
                         + ("only the " + " and ".join(q for q in ("drag", "torque") if q in cm.columns)
                            + " is fitted" if {"drag", "torque"} & set(cm.columns) else "nothing is fitted"))
+
+
+def _note_unread_moment(cm: ColumnMap, split: dict) -> None:
+    """map_columns without a torque column: a column in a torque's unit under another name
+    ('Mz (ft-lb)', a balance's moment about the rotor axis) is named in a note (it was left out
+    unsaid where a force column beside it was named: a wind-tunnel data audit, 2026-12-02)."""
+    moments = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS["torque"]]
+    if moments:
+        cm.notes.append(f"column(s) {', '.join(map(repr, moments[:3]))} (a moment) not read: if one is the moment "
+                        "about the rotor axis, name it 'torque' with its unit to fit it (or 'rolling_moment', the "
+                        "moment about the in-plane airspeed's direction: docs/conventions.md)")
 
 
 def _refuse_pitch_like(names, error) -> None:
