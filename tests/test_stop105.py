@@ -28,19 +28,27 @@ def test_a_motor_acceleration_is_judged_over_the_windows_kept_only():
 
 
 # ---- thrust-stand exports (identify/steps.py, loads_csv.py, headers.py; an export audit of this stop) ---------------
-def _stand_log(path, header, *, up=0, down=0, rate=25.0):
-    """A steps test at 40 Hz: 7 steps of 12 rows, 1150-1750 us and 3000-9000 rpm, thrust 6.8e-8 rpm^2 N and
-    torque 1.36e-9 rpm^2 N m (an APC 8x6E's order), with ``up`` ramp rows from idle before the first step and
-    ``down`` after the last (``rate`` us a row, the load following the speed), between motor-stopped rows."""
+def _stand_rows(up=0, down=0, rate=25.0, jitter=0.0, hold=12):
+    """(ESC signal [us], rpm) rows of a steps test: 7 steps of ``hold`` rows, 1150-1750 us and 3000-9000 rpm, with
+    ``up`` ramp rows from idle before the first step and ``down`` after the last (``rate`` us a row, +-``jitter``
+    us of readback noise), between motor-stopped rows."""
+    noise = np.random.default_rng(1).integers(-jitter, jitter + 1, up + down) if jitter else np.zeros(up + down)
     rows = [(1000.0, 0.0)] * 4
-    rows += [(1150.0 - rate * (up - k), 3000.0 - 250.0 * (up - k)) for k in range(up)]
+    rows += [(1150.0 - rate * (up - k) + noise[k], 3000.0 - 250.0 * (up - k)) for k in range(up)]
     for k in range(7):
-        rows += [(1150.0 + 100 * k, 3000.0 + 1000 * k)] * 12
-    rows += [(1750.0 - rate * (k + 1), 9000.0 - 250.0 * (k + 1)) for k in range(down)]
-    rows += [(1000.0, 0.0)] * 4
-    lines = [",".join(header)]
+        rows += [(1150.0 + 100 * k, 3000.0 + 1000 * k)] * hold
+    rows += [(1750.0 - rate * (k + 1) + noise[up + k], 9000.0 - 6000.0 * (k + 1) / down) for k in range(down)]
+    return rows + [(1000.0, 0.0)] * 4
+
+
+def _stand_log(path, header, *, up=0, down=0, rate=25.0, rows=None, hz=40.0, groups=None):
+    """A steps test sampled at ``hz`` (default :func:`_stand_rows`), thrust 6.8e-8 rpm^2 N and torque 1.36e-9
+    rpm^2 N m (an APC 8x6E's order), the load following the speed; ``groups`` a label per row."""
+    rows = rows or _stand_rows(up, down, rate)
+    lines = [",".join(header + (["group"] if groups else []))]
     for i, (esc, rpm) in enumerate(rows):
-        lines.append(f"{i / 40:.3f},{esc:.0f},{-1.36e-9 * rpm**2:.6g},{6.8e-8 * rpm**2:.6g},{rpm:.0f}")
+        lines.append(f"{i / hz:.3f},{esc:.0f},{-1.36e-9 * rpm**2:.6g},{6.8e-8 * rpm**2:.6g},{rpm:.0f}"
+                     + (f",{groups[i]}" if groups else ""))
     path.write_text("\n".join(lines) + "\n", encoding="utf-8")
     return path
 
@@ -60,10 +68,35 @@ def test_the_ramps_up_from_idle_and_back_to_it_are_no_points(tmp_path, up, down)
     assert any(f"{84 + up + down} rows averaged into 7 ESC steps" in n for n in data.notes), data.notes
 
 
+def test_the_ramps_of_two_tests_in_one_log_are_no_points(tmp_path):
+    """A test's ends are also where the label changes and where the time jumps (the stopped rows between two tests
+    skipped): two tests with their ramps, labelled or concatenated, are 14 points (a review: 48, the ramps inside the
+    log kept)."""
+    from propmap.identify import read_loads
+
+    rows = _stand_rows(6, 28)
+    labels = ["A"] * len(rows) + ["B"] * len(rows)
+    with pytest.warns(UserWarning, match="7 row"):  # (the two tests' points alike: said as repeated rows)
+        assert read_loads(_stand_log(tmp_path / "g.csv", HEADER, rows=rows + rows, groups=labels)).n == 14
+    with pytest.warns(UserWarning, match="7 row"):
+        assert read_loads(_stand_log(tmp_path / "c.csv", HEADER, rows=rows + rows)).n == 14
+
+
+def test_a_jittering_ramp_is_no_points_and_short_steps_of_a_slow_log_are(tmp_path):
+    """A 5 us/row ramp back to idle with +-2 us of readback jitter (some rows merged into two-row steps, a few moving
+    back) is dropped; the two-row steps of a 2 Hz log beside a 6-row step stay points (a review: a first version read
+    ten such steps as a ramp and refused the log as one point)."""
+    from propmap.identify import read_loads
+
+    assert read_loads(_stand_log(tmp_path / "j.csv", HEADER, rows=_stand_rows(0, 100, rate=5.0, jitter=2))).n == 7
+    slow = [(1000.0, 0.0)] * 2 + [(1150.0 + 60 * k, 3000.0 + 600 * k) for k in range(10) for _ in range(2)]
+    slow += [(1750.0, 9200.0)] * 6 + [(1000.0, 0.0)] * 2
+    assert read_loads(_stand_log(tmp_path / "s.csv", HEADER, rows=slow, hz=2.0)).n == 11
+
+
 def test_a_ramp_at_the_end_that_rises_stays_points(tmp_path):
     """Short steps after the last long step that rise (a warm-up hold, then a table of short steps) are no ramp to
-    idle: the end rule takes only a monotone fall (here 1 + 10 points: the 7 steps' last one held, then 10 single
-    rows rising 25 us each)."""
+    idle: the end rule takes only a fall (here 7 + 10 points: the 7 steps, then 10 single rows rising 25 us each)."""
     from propmap.identify import read_loads
 
     path = _stand_log(tmp_path / "s.csv", HEADER)
@@ -198,6 +231,17 @@ def test_an_unread_angle_beside_an_airspeed_is_refused(tmp_path, angle):
     with pytest.raises(DataError, match=rf"column '{re.escape(angle)}' looks like a flow angle, which propmap reads "
                                         r"only as 'incidence_deg'"):
         read_loads(path)
+
+
+@pytest.mark.parametrize("name", ["phase_angle", "theta_75", "alpha_filter", "Tilt servo", "Coning angle"])
+def test_an_angles_word_among_others_beside_an_airspeed_gets_a_note(tmp_path, name):
+    """A name with a flow angle's word among other words (a motor's phase angle, a blade angle at 0.75 R, a filter's
+    alpha) is not refused but named in a note (a review: a first version refused them, files that read before)."""
+    from propmap.identify import read_loads
+
+    data = read_loads(_tunnel(tmp_path, ["rpm", "airspeed", name, "thrust", "torque"]), min_points=1)
+    assert any(f"column '{name}' is not read; if it is a flow angle, name it 'incidence_deg'" in n
+               for n in data.notes), data.notes
 
 
 def test_a_blade_pitch_beside_an_airspeed_is_still_refused_as_a_pitch(tmp_path):

@@ -259,7 +259,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                 "groups": [n for n in names if n not in held], "held_out": sorted(held),
                 "files_sha256": file_digests([p for p, n in zip(log_paths, names) if n not in held])}
     beyond = _held_beyond(logs, held, coverage, veh, res.air)
-    if cross_validate:  # (each fold's log against the other training logs: said for --holdout only, a docs audit)
+    if cross_validate:  # (each fold's log against the other training logs: said for --holdout only, a docs audit,
+        # 2026-12-02)
         kept = [lg for lg in logs if lg.name not in held]
         for lg in kept:
             beyond += _held_beyond([lg], {lg.name}, _flight_coverage([o for o in kept if o is not lg], veh, res.air),

@@ -3,12 +3,14 @@
 A thrust stand's software (RCbenchmark / Tyto Robotics; :mod:`propmap.identify.stand` maps
 its columns) logs every sample of a test that holds the ESC signal at a sequence of levels.
 :func:`stand_points` splits the rows into steps (one signal level and one operating
-condition each), drops each step's settling and unsteady rows and the ramps between steps,
-and averages the rest; :func:`esc_form` reads whether the signal is a pulse width [us] or a
-throttle in percent or as a fraction.
+condition each), drops each step's settling and unsteady rows and the ramps between steps
+and at a test's ends (up from idle, back to it), and averages the rest; :func:`esc_form`
+reads whether the signal is a pulse width [us] or a throttle in percent or as a fraction.
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -252,7 +254,8 @@ def _one_condition(x: np.ndarray, steps: list, q: str, cond_tol: dict) -> bool:
     return all(abs(np.median(x[a:b]) - first) <= tol for a, b in steps[1:])
 
 
-def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dict) -> set:
+def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dict, time=None,
+           tol: float = ESC_TOL_US) -> set:
     """The indexes of the steps that are the signal ramping from one step to the next: a run of
     steps of one or two rows between two steps of five rows or more, at their operating
     condition and label, whose signals lie between the two's (each ramp row was a "step" of its
@@ -260,13 +263,18 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
     export audit, 2026-11-27). Short steps anywhere else (an export that averaged its steps, a
     tunnel run's short airspeed steps after a long static one) stay points.
 
-    So are the ramps at the rows' ends (the stopped motor's rows skipped before), at the operating
-    condition and label of the step of five rows or more next to them: a run of two or more such
-    steps that begins the rows and whose signals rise monotonically to that step's (the ramp up
-    from idle), or that ends them and whose signals fall monotonically from it (the ramp back to
-    idle after a test; both were points, 28 of 35 points in a thrust-stand export audit's log of
-    7 steps, 2026-12-02). Short steps rising after the last long step (a warm-up hold, then a
-    table of short steps) stay points."""
+    So are the ramps at a test's ends in a sampled log: two or more such steps that begin a test
+    and whose signals rise to the next step, held for _SAMPLED_HOLD rows or more (the ramp up
+    from idle), or that end a test and fall from the step before, held as long (the ramp back to
+    idle), at that step's operating condition and label, every signal below that step's by more
+    than ``tol`` and each move against the ramp within 2 ``tol`` (a readback's jitter); both
+    were points, 28 of 35 points in a thrust-stand export audit's log of 7 steps (2026-12-02). A
+    test begins and ends at the rows' ends, where the label changes, and where the time jumps
+    by more than 3 rows' median interval (the stopped motor's rows skipped before). Short steps
+    rising after the last long step (a warm-up hold, then a table of short steps) and short
+    steps beside steps held for fewer rows (a log at a few hertz, a table: a review found a
+    2 Hz log's first ten steps dropped by a first version) stay points; so do the steps of a
+    ramp slower than one tolerance a row (steps of three rows or more)."""
     size = [b - a for a, b in steps]
     level = [float(np.median(esc[a:b])) for a, b in steps]
 
@@ -274,6 +282,12 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
         return ((labels is None or len({labels[steps[i][0]] for i in range(first, last + 1)}) == 1)
                 and all(_one_condition(x, steps[first:last + 1], q, cond_tol) for q, x in conditions.items()))
 
+    cut = [True] * (len(steps) + 1)  # cut[j]: a test ends before step j (and cut[len]: after the last)
+    dt = float(np.median(np.diff(time))) if time is not None and len(time) > 1 else math.nan
+    for j in range(1, len(steps)):
+        a = steps[j][0]
+        cut[j] = ((labels is not None and labels[a] != labels[a - 1])
+                  or (math.isfinite(dt) and dt > 0 and time[a] - time[a - 1] > 3 * dt))
     out = set()
     j = 0
     while j < len(steps):
@@ -284,16 +298,23 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
         while end < len(steps) and size[end] <= 2:
             end += 1
         before, after = j - 1, end  # the long steps around the run [j, end)
-        if before >= 0 and after < len(steps) and size[before] >= 5 and size[after] >= 5:
-            lo, hi = sorted((level[before], level[after]))
-            if same(before, after) and lo < hi and all(lo < level[i] < hi for i in range(j, end)):
-                out.update(range(j, end))
-        elif end - j >= 2 and (j == 0) != (end == len(steps)):  # a run at the rows' start or end, not both
-            held = after if j == 0 else before  # the long step it ramps to or from
-            if 0 <= held < len(steps) and size[held] >= 5 and same(min(j, held), max(end - 1, held)):
-                path = [*level[j:end], level[held]] if j == 0 else [level[held], *level[j:end]]
-                if np.all(np.diff(path) > 0) if j == 0 else np.all(np.diff(path) < 0):  # (up from idle, down to it)
-                    out.update(range(j, end))
+        lo, hi = sorted((level[before], level[after])) if 0 <= before and after < len(steps) else (0.0, 0.0)
+        if (before >= 0 and after < len(steps) and size[before] >= 5 and size[after] >= 5 and same(before, after)
+                and lo < hi and all(lo < level[i] < hi for i in range(j, end))):
+            out.update(range(j, end))
+        elif end - j >= 2:
+            # (a run that begins a test, or ends one, not both: the long step it ramps to or from)
+            inner = [k for k in range(j + 1, end) if cut[k]]  # (a test's end inside the run: its pieces)
+            for first, last in zip([j, *inner], [*inner, end]):
+                up, down = cut[first] and not cut[last], cut[last] and not cut[first]
+                held = last if up else first - 1
+                if not (up or down) or last - first < 2 or not 0 <= held < len(steps) or size[held] < _SAMPLED_HOLD:
+                    continue
+                run = np.array(level[first:last])
+                moves = np.diff(run) * (1 if up else -1)  # (along the ramp: up from idle, down to it)
+                if (same(min(first, held), max(last - 1, held)) and np.all(run < level[held] - tol)
+                        and np.all(moves > -2 * tol) and moves.sum() > 0):
+                    out.update(range(first, last))
         j = end
     return out
 
@@ -312,8 +333,8 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
     what remains is averaged. A step where fewer than half of the rows after settling are
     steady (a spin-down, a step too short for the motor) gives no point. A step of one or
     two rows is taken whole (an export that already averaged its steps), unless it is part of a
-    ramp between two steps of five rows or more (:func:`_ramps`): then its rows are dropped as
-    transients.
+    ramp between two steps of five rows or more, or at a test's end beside a step held for
+    _SAMPLED_HOLD rows or more (:func:`_ramps`): then its rows are dropped as transients.
 
     Parameters
     ----------
@@ -346,7 +367,7 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
     starts = _step_starts(esc, conditions, labels, ESC_TOL[form], cond_tol)
     steps = _merge_steps(list(zip(starts, [*starts[1:], esc.size])), esc, conditions, labels, ESC_TOL[form],
                          cond_tol)
-    ramp = _ramps(steps, esc, conditions, labels, cond_tol)
+    ramp = _ramps(steps, esc, conditions, labels, cond_tol, time, ESC_TOL[form])
     out = {k: [] for k in values}
     groups, dropped, unsteady = [], 0, []
     k = 0

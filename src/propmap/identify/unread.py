@@ -52,8 +52,22 @@ _AMBIGUOUS = {"v": "airspeed", "vd": "airspeed", "j": "airspeed", "mu": "airspee
               "yaw": "incidence_deg", "yaw angle": "incidence_deg"}
 #: a balance's axis components (Fx, F_z, Mz, force x), which give the loads only resolved in the rotor's axes
 _BODY_COMPONENT = re.compile(r"(f|force|m|moment) ?[xyz]")
-#: words of a flow angle's name (beside an airspeed an unread column so named is refused: _refuse_unread_flow)
-_ANGLE_WORDS = re.compile(r"\b(angle|alpha|aoa|tilt|theta|beta|inclination|incidence)\b")
+#: words of a flow angle's name, and the words that may stand beside them in one (beside an airspeed an unread column
+#: named with these alone is refused, one with other words too gets a note: _refuse_unread_flow)
+_ANGLE_WORDS = frozenset(("angle", "alpha", "aoa", "tilt", "theta", "beta", "inclination", "incidence"))
+_FLOW_WORDS = frozenset(("wind", "flow", "inflow", "freestream", "free", "stream", "shaft", "prop", "propeller",
+                         "rotor", "disk", "disc", "attack", "of", "the", "tunnel", "sting", "mount", "rig", "a", "d",
+                         "p", "s"))
+
+
+def _flow_angle_words(base: str) -> str | None:
+    """"only" where the column name ``base`` (its unit removed) is a flow angle's words alone
+    (``alpha_angle``, ``tilt angle``, ``theta``), "among" where it holds one among other words
+    (``phase_angle``, ``theta_75``), else None."""
+    words = [w for w in re.split(r"[\s_\-.]+", base.lower()) if w]
+    if not _ANGLE_WORDS.intersection(words):
+        return None
+    return "only" if set(words) <= _ANGLE_WORDS | _FLOW_WORDS else "among"
 _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
 #: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
 #: propeller); a unit 'kN' is a force (kilonewton), not knots
@@ -190,11 +204,12 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
             like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and "_" in b
                      and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like
                      and not re.search(r"temp", b)]  # (temp_deg, motor_temp_degrees: a temperature)
-            # an angle's word in a name without a unit or in an angle's (alpha_angle, tilt_angle, theta, wind_angle,
-            # alpha_prop were left unread beside an airspeed, every point axial: 28% thrust error, exit 0, a wind-tunnel
-            # data audit, 2026-12-02); a blade pitch's name is refused as such after this
+            # a name of a flow angle's words alone, without a unit or in an angle's (alpha_angle, tilt_angle, theta,
+            # wind_angle, alpha_prop were left unread beside an airspeed, every point axial: 28% thrust error, exit 0,
+            # a wind-tunnel data audit, 2026-12-02); one with other words too (phase_angle, coning angle, theta_75,
+            # alpha_filter: a review) gets a note below; a blade pitch's name is refused as such after this
             like += [n for n, (b, u) in split.items() if b not in _NAMES and n not in like
-                     and (u is None or _token(u) in UNITS["angle"]) and _ANGLE_WORDS.search(b.replace("_", " "))
+                     and (u is None or _token(u) in UNITS["angle"]) and _flow_angle_words(b) == "only"
                      and not (_name_stems(n) | {b}) & _loose(_PITCH_LIKE)]
         if like:
             joule = " (an energy in joules: give its unit, 'energy (J)')" if like[0].strip().lower() == "j" else ""
@@ -210,6 +225,13 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: {todo}, or "
                         f"remove it; left unread, every point would be taken as {default}{joule}")
         maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]  # (no underscores in its keys)
+        if quantity == "incidence_deg" and flow:  # (an angle's word among others: a note, a review, 2026-12-02)
+            other = [n for n, (b, u) in split.items() if b not in _NAMES and _flow_angle_words(b) == "among"
+                     and (u is None or _token(u) in UNITS["angle"])
+                     and not (_name_stems(n) | {b}) & _loose(_PITCH_LIKE)]
+            if other:
+                cm.notes.append(f"column {other[0]!r} is not read; if it is {what}, name it {read_as} (every point is "
+                                f"taken as {default})")
         if maybe and quantity == "incidence_deg" and flow:
             raise error(f"column {maybe[0]!r} looks like {what} beside the airspeed, which propmap reads only as "
                         f"{read_as}: rename it, converted, or remove it; left unread, every point would be taken "
@@ -258,10 +280,13 @@ def _note_unread_force(cm: ColumnMap, split: dict) -> None:
 
 
 def _note_unread_moment(cm: ColumnMap, split: dict) -> None:
-    """map_columns without a torque column: a column in a torque's unit under another name
-    ('Mz (ft-lb)', a balance's moment about the rotor axis) is named in a note (it was left out
-    unsaid where a force column beside it was named: a wind-tunnel data audit, 2026-12-02)."""
-    moments = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS["torque"]]
+    """map_columns without a torque column: a balance's axis moment in a torque's unit ('Mz
+    (ft-lb)', 'M_x (N m)') is named in a note (it was left out unsaid where a force column beside
+    it was named: a wind-tunnel data audit, 2026-12-02)."""
+    # (a balance's axis moments only: a pitching or yawing moment has its own note, a 'Torque std' or a motor's
+    # torque constant is no torque; a review, 2026-12-02)
+    moments = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS["torque"]
+               and _BODY_COMPONENT.fullmatch(b.replace("_", " "))]
     if moments:
         cm.notes.append(f"column(s) {', '.join(map(repr, moments[:3]))} (a moment) not read: if one is the moment "
                         "about the rotor axis, name it 'torque' with its unit to fit it (or 'rolling_moment', the "

@@ -309,6 +309,10 @@ def _odd_ratio(b1: float, against: str = "another frame or sign?") -> str:
     return "zeros or another quantity?" if abs(b1) < lo else against if b1 < 0 else "another unit or column?"
 
 
+#: the fewest windows a logged derivative is judged over (_derivative_ratio)
+DERIVATIVE_MIN_WINDOWS = 10
+
+
 def _derivative_ratio(log: FlightLog, values: np.ndarray, logged: np.ndarray, judged: float,
                       calm: np.ndarray | None = None) -> float | None:
     """None where the logged derivative ``logged`` of ``values`` (rows at the log's times) is
@@ -330,8 +334,10 @@ def _derivative_ratio(log: FlightLog, values: np.ndarray, logged: np.ndarray, ju
         keep = inside[k + 1:] - inside[:-k - 1] == 0
         d, means = np.where(keep, d, 0.0), np.where(keep, means, 0.0)
         n_kept = int(np.count_nonzero(keep))
-    # (the rms over the windows kept: the left-out ones' zeros diluted it, so a log with many spikes went unjudged)
-    if n_kept == 0 or np.sqrt(np.sum(d**2) / n_kept) < judged:
+    # (the rms over the windows kept: the left-out ones' zeros diluted it, so a log whose first seconds carry no motor
+    # acceleration went unjudged, an audit of stop 105, 2026-12-02; fewer than DERIVATIVE_MIN_WINDOWS kept judge
+    # nothing, their noise would: a review)
+    if n_kept < DERIVATIVE_MIN_WINDOWS or np.sqrt(np.sum(d**2) / n_kept) < judged:
         return None
     ld, dd, ll = float(np.sum(means * d)), float(np.sum(d * d)), float(np.sum(means * means))
     lo, hi = ANGULAR_ACCELERATION_RATIO
