@@ -1,5 +1,6 @@
-"""Stop 105: defects found by this stop's audits, each test failing on the code before its fix. Data: synthetic
-flight logs (NeuroBEM's layout); the catalogue's APC 8x6E (APC PE0 geometry)."""
+"""Stop 105: defects found by this stop's audits, each test failing on the code before its fix, except the guards
+said so (what a fix must keep: files that read before). Data: synthetic flight logs (NeuroBEM's layout), stand
+exports and wind-tunnel tables; the catalogue's APC 8x6E and 10x7E (APC PE0 and UIUC geometry)."""
 
 import dataclasses
 import math
@@ -154,7 +155,7 @@ def test_a_continuous_sweep_is_read_row_by_row_with_a_note(tmp_path):
     (tmp_path / "w.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
     data = read_loads(tmp_path / "w.csv")
     assert data.n == 60
-    assert any("each of the 60 rows is a point: 'ESC signal (µs)' changes at every row (a continuous sweep"
+    assert any("each of the 60 rows is a point: no two rows of 'ESC signal (µs)' hold one value (a continuous sweep"
                in n for n in data.notes), data.notes
 
 

@@ -380,9 +380,9 @@ def _steps_or_points(f, cm, v: dict, group, lines: np.ndarray, what: str, p: str
     else:
         if v.pop("esc", None) is not None and "time" in v and n > 40:
             # (a sweep's 1400 rows were fitted as points without a word: an export audit, 2026-12-02)
-            notes.append(f"each of the {n} rows is a point: {cm.column('esc')!r} changes at every row (a continuous "
-                         "sweep, no held steps to average), so each is taken as the motor followed the sweep (near "
-                         "steady in a slow sweep, not in a fast one)")
+            notes.append(f"each of the {n} rows is a point: no two rows of {cm.column('esc')!r} hold one value (a "
+                         "continuous sweep, no held steps to average), so each is taken as the motor followed the "
+                         "sweep (near steady in a slow sweep, not in a fast one)")
         if v.pop("time", None) is not None and "esc" not in cm.columns and n > 40:
             # (a stand log whose signal column went unread, 'PWM (µs)', had its 380 raw samples fitted as points with
             # no word: a thrust-stand export audit, 2026-11-27)
