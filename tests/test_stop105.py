@@ -5,10 +5,12 @@ exports and wind-tunnel tables; the catalogue's APC 8x6E and 10x7E (APC PE0 and 
 import dataclasses
 import math
 import re
+import warnings
 
 import numpy as np
 import pytest
 
+from propmap.identify import DataError, read_loads
 from test_audit_mutation_stop101 import _check, _log
 
 
@@ -264,3 +266,222 @@ def test_a_balances_moment_is_named_and_its_axis_components_explained(tmp_path):
                                         r"axis components: propmap reads the loads in the rotor's axes"):
         read_loads(_tunnel(tmp_path, ["rpm", "airspeed", "incidence_deg", "Fx (N)", "Fz (N)", "Mz (N m)"]),
                    min_points=1)
+
+
+# ---- the survivors of this stop's mutation audit (a helper session: 82 hand-made mutants of the change, 35 killed, 13
+# equivalent; these tests kill 20 of the real gaps; S: steps.py, L: loads_csv.py, H: headers.py, U: unread.py,
+# C: cli/flight.py). Synthetic stand logs and tunnel tables as above.
+def _n(path, **kw):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return read_loads(path, **kw)
+
+
+def test_S2_label_cut_without_time_gap(tmp_path):
+    """A label change ends a test even without stopped rows or a time gap between two tests (14 points, not 48)."""
+    rows = _stand_rows(6, 28)[4:-4]
+    assert (
+        _n(_stand_log(tmp_path / "g.csv", HEADER, rows=rows + rows, groups=["A"] * len(rows) + ["B"] * len(rows))).n
+        == 14
+    )
+
+
+def test_S5_backmove_3us_still_ramp(tmp_path):
+    """A ramp to idle with a 3 us move back (merged into a step of two rows) is still a ramp: 7 points."""
+    lv = [1740, 1730, 1720, 1723, 1710, 1700, 1690, 1680, 1670, 1660]
+    rows = _stand_rows()[:-4] + [(float(e), 9000.0 - 30 * (1750 - e)) for e in lv] + [(1000.0, 0.0)] * 4
+    assert _n(_stand_log(tmp_path / "s.csv", HEADER, rows=rows)).n == 7
+
+
+def test_S6_backmove_6us_stays_points(tmp_path):
+    """A fall with a 6 us move back (two steps) is no monotone ramp: its 10 rows stay points, 17."""
+    lv = [1740, 1730, 1720, 1726, 1710, 1700, 1690, 1680, 1670, 1660]
+    rows = _stand_rows()[:-4] + [(float(e), 9000.0 - 30 * (1750 - e)) for e in lv] + [(1000.0, 0.0)] * 4
+    assert _n(_stand_log(tmp_path / "s.csv", HEADER, rows=rows)).n == 17
+
+
+def test_S11_a_short_burst_before_a_test_stays_points(tmp_path):
+    """A 3-row rising burst, stopped rows, then a test: the burst ends at the gap, so it stays points (10)."""
+    rows = [(1000.0, 0.0)] * 4 + [(1050.0, 1500.0), (1075.0, 1800.0), (1100.0, 2100.0)] + _stand_rows()
+    assert _n(_stand_log(tmp_path / "s.csv", HEADER, rows=rows)).n == 10
+
+
+def _csv(path, header, rows):
+    path.write_text(
+        ",".join(header) + "\n" + "\n".join(",".join(f"{x:.6g}" for x in r) for r in rows) + "\n", encoding="utf-8"
+    )
+    return path
+
+
+H6 = ["Time (s)", "ESC signal (µs)", "Torque (N·m)", "Thrust (N)", "Motor Optical Speed (RPM)", "airspeed"]
+
+
+def _r(t, esc, rpm, v):
+    return (t, esc, -1.36e-9 * rpm**2, 6.8e-8 * rpm**2, rpm, v)
+
+
+def test_S14_end_fall_at_other_airspeeds_stays_points(tmp_path):
+    """Short steps falling at the end at other airspeeds are tunnel points, not a ramp (11)."""
+    rows = [_r(0, 1150 + 100 * k, 3000 + 1000 * k, 0.0) for k in range(7) for _ in range(12)]
+    rows += [_r(0, e, 8000 - 500 * i, 2.0 * (i + 1)) for i, e in enumerate((1700, 1650, 1600, 1550))]
+    rows = [(i / 40, *r[1:]) for i, r in enumerate(rows)]
+    assert _n(_csv(tmp_path / "t.csv", H6, rows)).n == 11
+
+
+def test_S19_middle_run_at_other_airspeeds_stays_points(tmp_path):
+    """Short steps between two long ones at other airspeeds are points (the middle rule's condition: 6)."""
+    rows = [_r(0, 1500, 6000, 0.0)] * 12
+    rows += [_r(0, 1500 + 20 * i, 6000 + 200 * i, 2.0 * i) for i in range(1, 5) for _ in range(2)]
+    rows += [_r(0, 1600, 7000, 10.0)] * 12
+    rows = [(i / 40, *r[1:]) for i, r in enumerate(rows)]
+    assert _n(_csv(tmp_path / "t.csv", H6, rows), min_points=1).n == 6
+
+
+def test_S18_throttle_percent_ramp_to_idle(tmp_path):
+    """A ramp to idle of 1 %/row in a throttle log is dropped with the throttle's tolerance (7 points, not 37)."""
+    hdr = ["Time (s)", "Throttle (%)", "Torque (N·m)", "Thrust (N)", "Motor Optical Speed (RPM)"]
+    rows = [(20.0 + 10 * k, 3000.0 + 1000 * k) for k in range(7) for _ in range(12)]
+    rows += [(79.0 - k, 9000.0 - 150 * (k + 1)) for k in range(30)]
+    rows = [(i / 40, e, -1.36e-9 * n**2, 6.8e-8 * n**2, n) for i, (e, n) in enumerate(rows)]
+    assert _n(_csv(tmp_path / "p.csv", hdr, rows)).n == 7
+
+
+def test_L8_optical_chosen_zero_electrical_not(tmp_path):
+    """rpm_source='optical' with the optical column 0: the refusal does not name the electrical one, which reads."""
+    header = [
+        "Time (s)",
+        "ESC signal (µs)",
+        "Torque (N·m)",
+        "Thrust (N)",
+        "Motor Electrical Speed (RPM)",
+        "Motor Optical Speed (RPM)",
+    ]
+    lines = [",".join(header)] + [
+        f"{k / 40:.3f},{1150 + 100 * (k // 12)},-0.02,1.0,{3000 + 1000 * (k // 12)},0" for k in range(84)
+    ]
+    (tmp_path / "z.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    with pytest.raises(DataError) as e:
+        _n(tmp_path / "z.csv", rpm_source="optical")
+    assert "and so is" not in str(e.value), str(e.value)
+
+
+def test_L4_no_time_no_sweep_note(tmp_path):
+    """50 distinct signal rows without a time column are a table, not a sweep: no sweep note."""
+    hdr = ["ESC signal (µs)", "Torque (N·m)", "Thrust (N)", "rpm"]
+    rows = [
+        (1100 + 10 * k, -1.36e-9 * (3000 + 50 * k) ** 2, 6.8e-8 * (3000 + 50 * k) ** 2, 3000 + 50 * k)
+        for k in range(50)
+    ]
+    d = _n(_csv(tmp_path / "w.csv", hdr, rows))
+    assert d.n == 50 and not any("continuous sweep" in n for n in d.notes), d.notes
+
+
+def test_L12_power_notes(tmp_path):
+    """'likely the electrical' only for a bare 'Power' beside voltage and current (not a shaft power, not alone)."""
+    for col, extra, likely in (
+        ("Shaft power (W)", True, False),
+        ("Power (W)", False, False),
+        ("Power (W)", True, True),
+    ):
+        path = tmp_path / "m.csv"
+        head = "Throttle (%),Thrust (g),RPM," + ("Voltage (V),Current (A)," if extra else "") + col
+        rows = [
+            f"{30 + 10 * k},{6.8e-8 * (3000 + 1000 * k) ** 2 / 9.80665e-3:.1f},{3000 + 1000 * k},"
+            + ("16.6," + f"{1 + k}," if extra else "")
+            + f"{16.6 * (1 + k):.2f}"
+            for k in range(7)
+        ]
+        path.write_text(head + "\n" + "\n".join(rows) + "\n")
+        notes = _n(path).notes
+        assert (
+            any("Q = P / Omega" in n for n in notes) and any("likely the electrical" in n for n in notes) == likely
+        ), (col, notes)
+
+
+def test_H2_pwm_throttle(tmp_path):
+    """'PWM throttle (µs)' is the ESC signal too."""
+    header = ["Time (s)", "PWM throttle (µs)", "Torque (N⋅m)", "Thrust (N)", "Rotation speed (rpm)"]
+    assert _n(_stand_log(tmp_path / "t.csv", header, down=5)).n == 7
+
+
+def test_U9_other_column_no_angle_note(tmp_path):
+    """A column without an angle's word ('temperature') gets no flow-angle note."""
+    d = _n(_tunnel(tmp_path, ["rpm", "airspeed", "temperature", "thrust", "torque"]), min_points=1)
+    assert not any("'temperature' is not read; if it is a flow angle" in n for n in d.notes), d.notes
+
+
+def test_U19_U20_D2_moment_note_only_for_axis_moments(tmp_path):
+    """No moment note for a force, a pitching moment, or beside a torque read."""
+    for hdr in (
+        ["rpm", "airspeed", "incidence_deg", "Thrust (N)", "Fx (N)"],
+        ["rpm", "airspeed", "incidence_deg", "Thrust (N)", "Pitching moment (N m)"],
+        ["rpm", "airspeed", "incidence_deg", "Thrust (N)", "Torque (N m)", "Mz (N m)"],
+    ):
+        d = _n(_tunnel(tmp_path, hdr), min_points=1)
+        assert not any("(a moment) not read" in n for n in d.notes), (hdr, d.notes)
+
+
+def test_U2_U21_underscored_components(tmp_path):
+    """'M_z' is an axis moment as 'Mz' is; F_x, F_z, M_z get the axis-components hint."""
+    d = _n(_tunnel(tmp_path, ["rpm", "airspeed", "incidence_deg", "Thrust (N)", "M_z (N m)"]), min_points=1)
+    assert any("column(s) 'M_z (N m)' (a moment) not read" in n for n in d.notes), d.notes
+    with pytest.raises(DataError, match=r"'F_x \(N\)', 'F_z \(N\)', 'M_z \(N m\)' look like a balance's"):
+        _n(_tunnel(tmp_path, ["rpm", "airspeed", "incidence_deg", "F_x (N)", "F_z (N)", "M_z (N m)"]), min_points=1)
+
+
+def test_S16_coarse_time(tmp_path):
+    """A log whose time is rounded to 0.1 s (zero steps between rows) still finds its tests' ends: 7 points."""
+    rows = _stand_rows(6, 28)
+    lines = [",".join(HEADER)] + [
+        f"{int(i / 40 * 10) / 10:.1f},{e:.0f},{-1.36e-9 * n**2:.6g},{6.8e-8 * n**2:.6g},{n:.0f}"
+        for i, (e, n) in enumerate(rows)
+    ]
+    (tmp_path / "c.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    assert _n(tmp_path / "c.csv").n == 7
+
+
+def test_C8_held_out_log_is_no_fold(tmp_path, capsys, shared_data):
+    """--holdout's log is no cross-validation fold: warned of as held out, not as a fold."""
+    from test_flight_log_units import SEGMENTS, VEHICLE, main
+
+    logs = [str(shared_data / "neurobem_flights" / s) for s in SEGMENTS]
+    code = main(
+        [
+            "fit",
+            "flight",
+            *logs,
+            "--vehicle",
+            str(VEHICLE),
+            "--out",
+            str(tmp_path / "p.toml"),
+            "--rate-hz",
+            "1",
+            "--holdout",
+            SEGMENTS[1],
+            "--cross-validate",
+            "--fit-params",
+            "collective",
+        ]
+    )
+    err = capsys.readouterr().err
+    assert code == 0 and f"the fold of {SEGMENTS[1]}" not in err and f"held-out log {SEGMENTS[1]} reaches" in err, err
+
+
+def test_profile_likelihood_takes_numpys_bool():
+    """FitOptions(profile_likelihood=np.True_) is a bool (a mask's element): accepted."""
+    from propmap.identify import FitOptions
+
+    assert FitOptions(profile_likelihood=np.True_).profile_likelihood
+
+
+def test_the_cv_report_gives_angles_in_degrees_under_their_report_names():
+    """_cv_report: a fold's collective 0.1 rad is collective_deg 5.73 deg, its at_bound names likewise, the
+    jackknife std error 0.01 rad 0.573 deg; other parameters as fitted."""
+    from propmap.cli.flight import _cv_report
+
+    cv = _cv_report({"folds": [{"log": "a", "x": {"collective": 0.1, "cl_alpha": 4.0}, "at_bound": ["collective"]}],
+                     "jackknife_std_error": {"collective": 0.01, "cl_alpha": 0.5}, "pooled": {}})
+    fold = cv["folds"][0]
+    assert fold["x"] == {"collective_deg": pytest.approx(math.degrees(0.1)), "cl_alpha": 4.0}
+    assert fold["at_bound"] == ["collective_deg"] and fold["log"] == "a"
+    assert cv["jackknife_std_error"] == {"collective_deg": pytest.approx(math.degrees(0.01)), "cl_alpha": 0.5}

@@ -254,8 +254,7 @@ def _one_condition(x: np.ndarray, steps: list, q: str, cond_tol: dict) -> bool:
     return all(abs(np.median(x[a:b]) - first) <= tol for a, b in steps[1:])
 
 
-def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dict, time=None,
-           tol: float = ESC_TOL_US) -> set:
+def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dict, time=None) -> set:
     """The indexes of the steps that are the signal ramping from one step to the next: a run of
     steps of one or two rows between two steps of five rows or more, at their operating
     condition and label, whose signals lie between the two's (each ramp row was a "step" of its
@@ -266,9 +265,10 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
     So are the ramps at a test's ends in a sampled log: two or more such steps that begin a test
     and whose signals rise to the next step, held for _SAMPLED_HOLD rows or more (the ramp up
     from idle), or that end a test and fall from the step before, held as long (the ramp back to
-    idle), at that step's operating condition and label, every signal below that step's by more
-    than ``tol`` and each move against the ramp within 2 ``tol`` (a readback's jitter); both
-    were points, 28 of 35 points in a thrust-stand export audit's log of 7 steps (2026-12-02). A
+    idle), at that step's operating condition and label, every signal below that step's and
+    monotone (a readback's jitter within 2 tolerances is merged into the steps before: adjacent
+    steps differ by more, :func:`_merge_steps`); both were points, 28 of 35 points in a
+    thrust-stand export audit's log of 7 steps (2026-12-02). A
     test begins and ends at the rows' ends, where the label changes, and where the time jumps
     by more than 3 rows' median interval (the stopped motor's rows skipped before). Short steps
     rising after the last long step (a warm-up hold, then a table of short steps) and short
@@ -312,8 +312,7 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
                     continue
                 run = np.array(level[first:last])
                 moves = np.diff(run) * (1 if up else -1)  # (along the ramp: up from idle, down to it)
-                if (same(min(first, held), max(last - 1, held)) and np.all(run < level[held] - tol)
-                        and np.all(moves > -2 * tol) and moves.sum() > 0):
+                if same(min(first, held), max(last - 1, held)) and np.all(run < level[held]) and np.all(moves > 0):
                     out.update(range(first, last))
         j = end
     return out
@@ -367,7 +366,7 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
     starts = _step_starts(esc, conditions, labels, ESC_TOL[form], cond_tol)
     steps = _merge_steps(list(zip(starts, [*starts[1:], esc.size])), esc, conditions, labels, ESC_TOL[form],
                          cond_tol)
-    ramp = _ramps(steps, esc, conditions, labels, cond_tol, time, ESC_TOL[form])
+    ramp = _ramps(steps, esc, conditions, labels, cond_tol, time)
     out = {k: [] for k in values}
     groups, dropped, unsteady = [], 0, []
     k = 0
