@@ -268,9 +268,9 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
     idle), at that step's operating condition and label, every signal below that step's and
     monotone (a readback's jitter within 2 tolerances is merged into the steps before: adjacent
     steps differ by more, :func:`_merge_steps`); both were points, 28 of 35 points in a
-    thrust-stand export audit's log of 7 steps (2026-12-02). A
-    test begins and ends at the rows' ends, where the label changes, and where the time jumps
-    by more than 3 rows' median interval (the stopped motor's rows skipped before). Short steps
+    thrust-stand export audit's log of 7 steps (2026-12-02). A test begins and ends at the rows'
+    ends, where the label changes, and where the time jumps by more than 3 rows' median
+    interval (the stopped motor's rows skipped before). Short steps
     rising after the last long step (a warm-up hold, then a table of short steps) and short
     steps beside steps held for fewer rows (a log at a few hertz, a table: a review found a
     2 Hz log's first ten steps dropped by a first version) stay points; so do the steps of a

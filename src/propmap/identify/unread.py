@@ -68,6 +68,8 @@ def _flow_angle_words(base: str) -> str | None:
     if not _ANGLE_WORDS.intersection(words):
         return None
     return "only" if set(words) <= _ANGLE_WORDS | _FLOW_WORDS else "among"
+
+
 _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
 #: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
 #: propeller); a unit 'kN' is a force (kilonewton), not knots
@@ -107,7 +109,8 @@ def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
 
 def _refuse_no_load(bases: dict, split: dict, found: str, error) -> None:
     """map_columns without a thrust, torque or drag column: refused, naming coefficient columns
-    (CT, CP) where they stand instead."""
+    (CT, CP) where they stand instead, and saying how a balance's axis components (Fx, Fz, Mz)
+    give the loads where they stand."""
     coeff = [n for n, b in bases.items() if b in _loose(_COEFFICIENT_NAMES)]
     if coeff:
         raise error(f"no load column, but coefficient column(s) {', '.join(map(repr, coeff))}: a CSV gives the "
@@ -119,9 +122,8 @@ def _refuse_no_load(bases: dict, split: dict, found: str, error) -> None:
     raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}" + (
         f"; {', '.join(map(repr, body[:3]))} look like a balance's axis components: propmap reads the loads in the "
         "rotor's axes, 'thrust' the force along the rotor axis in its direction (-Fz where z points against the "
-        "thrust, as a z-down frame's), 'drag' the in-plane "
-        "force along the in-plane airspeed and 'torque' the moment about the axis: write those columns, resolved so "
-        "(docs/conventions.md)" if body else ""))
+        "thrust, as a z-down frame's), 'drag' the in-plane force along the in-plane airspeed and 'torque' the moment "
+        "about the axis: write those columns, resolved so (docs/conventions.md)" if body else ""))
 
 
 def _refuse_wind_axes_and_rates(cm: ColumnMap, split: dict, bases: dict, stems: dict, error) -> None:
