@@ -485,3 +485,28 @@ def test_the_cv_report_gives_angles_in_degrees_under_their_report_names():
     assert fold["x"] == {"collective_deg": pytest.approx(math.degrees(0.1)), "cl_alpha": 4.0}
     assert fold["at_bound"] == ["collective_deg"] and fold["log"] == "a"
     assert cv["jackknife_std_error"] == {"collective_deg": pytest.approx(math.degrees(0.01)), "cl_alpha": 0.5}
+
+
+def test_the_name_patterns_of_flow_angles_and_axis_components(tmp_path):
+    """The patterns of unread.py at their edges (the mutation audit's untested forms): an angle's words joined by a
+    hyphen or a point are refused; in a unit that is no angle's they are neither refused nor noted; a blade pitch's
+    name gets no flow-angle note; 'Moment Z' and both of 'Mx', 'Mz' are axis moments; 'Mz_tare' is no component."""
+    for name in ("alpha-angle", "tilt.angle"):
+        with pytest.raises(DataError, match=rf"column '{re.escape(name)}' looks like a flow angle"):
+            read_loads(_tunnel(tmp_path, ["rpm", "airspeed", name, "thrust", "torque"]), min_points=1)
+    for name in ("phase_angle (A)", "theta (Hz)"):
+        d = _n(_tunnel(tmp_path, ["rpm", "airspeed", name, "thrust", "torque"]), min_points=1)
+        assert not any("flow angle" in n for n in d.notes), d.notes
+    rows = [(5000, 0.0, 0.0, 3.9, 0.074, 0.0), (5000, 10.0, 2.0, 4.3, 0.081, 2.0), (6000, 5.0, 0.0, 5.4, 0.10, 0.0)]
+    d = _n(_tunnel(tmp_path, ["rpm", "airspeed", "collective_deg", "thrust", "torque", "pitch_angle"], rows),
+           min_points=1)
+    assert d.n == 3 and not any("flow angle" in n for n in d.notes), d.notes
+    d = _n(_tunnel(tmp_path, ["rpm", "airspeed", "incidence_deg", "thrust", "Moment Z (N m)"]), min_points=1)
+    assert any("column(s) 'Moment Z (N m)' (a moment) not read" in n for n in d.notes), d.notes
+    d = _n(_tunnel(tmp_path, ["rpm", "airspeed", "incidence_deg", "thrust", "Mx (N m)", "Mz (N m)"],
+                   [r + (0.01,) for r in [(5000, 0.0, 0.0, 3.9, 0.074), (5000, 10.0, 90.0, 4.3, 0.081)]]),
+           min_points=1)
+    assert any("column(s) 'Mx (N m)', 'Mz (N m)' (a moment)" in n for n in d.notes), d.notes
+    with pytest.raises(DataError) as err:
+        read_loads(_tunnel(tmp_path, ["rpm", "airspeed", "incidence_deg", "Fx (N)", "Mz_tare (N m)"]), min_points=1)
+    assert "'Fx (N)' look like a balance's axis components" in str(err.value), str(err.value)
