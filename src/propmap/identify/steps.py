@@ -288,6 +288,27 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
         a = steps[j][0]
         cut[j] = ((labels is not None and labels[a] != labels[a - 1])
                   or (math.isfinite(dt) and dt > 0 and time[a] - time[a - 1] > 3 * dt))
+
+    def between(before: int, after: int) -> bool:  # steps (before, after) a ramp from one long step to the other
+        if before < 0 or after >= len(steps) or min(size[before], size[after]) < 5 or not same(before, after):
+            return False
+        lo, hi = sorted((level[before], level[after]))
+        return lo < hi and all(lo < level[i] < hi for i in range(before + 1, after))
+
+    def at_ends(j: int, end: int) -> set:  # the pieces of the run [j, end) that begin or end a test, not both
+        found = set()
+        inner = [k for k in range(j + 1, end) if cut[k]]  # (a test's end inside the run: its pieces)
+        for first, last in zip([j, *inner], [*inner, end]):
+            up, down = cut[first] and not cut[last], cut[last] and not cut[first]
+            held = last if up else first - 1  # the long step it ramps to or from
+            if not (up or down) or last - first < 2 or not 0 <= held < len(steps) or size[held] < _SAMPLED_HOLD:
+                continue
+            run = np.array(level[first:last])
+            moves = np.diff(run) * (1 if up else -1)  # (along the ramp: up from idle, down to it)
+            if same(min(first, held), max(last - 1, held)) and np.all(run < level[held]) and np.all(moves > 0):
+                found.update(range(first, last))
+        return found
+
     out = set()
     j = 0
     while j < len(steps):
@@ -297,23 +318,7 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
         end = j
         while end < len(steps) and size[end] <= 2:
             end += 1
-        before, after = j - 1, end  # the long steps around the run [j, end)
-        lo, hi = sorted((level[before], level[after])) if 0 <= before and after < len(steps) else (0.0, 0.0)
-        if (before >= 0 and after < len(steps) and size[before] >= 5 and size[after] >= 5 and same(before, after)
-                and lo < hi and all(lo < level[i] < hi for i in range(j, end))):
-            out.update(range(j, end))
-        elif end - j >= 2:
-            # (a run that begins a test, or ends one, not both: the long step it ramps to or from)
-            inner = [k for k in range(j + 1, end) if cut[k]]  # (a test's end inside the run: its pieces)
-            for first, last in zip([j, *inner], [*inner, end]):
-                up, down = cut[first] and not cut[last], cut[last] and not cut[first]
-                held = last if up else first - 1
-                if not (up or down) or last - first < 2 or not 0 <= held < len(steps) or size[held] < _SAMPLED_HOLD:
-                    continue
-                run = np.array(level[first:last])
-                moves = np.diff(run) * (1 if up else -1)  # (along the ramp: up from idle, down to it)
-                if same(min(first, held), max(last - 1, held)) and np.all(run < level[held]) and np.all(moves > 0):
-                    out.update(range(first, last))
+        out.update(range(j, end) if between(j - 1, end) else at_ends(j, end) if end - j >= 2 else ())
         j = end
     return out
 

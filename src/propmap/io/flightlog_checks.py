@@ -328,16 +328,14 @@ def _derivative_ratio(log: FlightLog, values: np.ndarray, logged: np.ndarray, ju
         return None
     d = (values[k:] - values[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
     means = _window_means(log.t, logged, k)
-    n_kept = d.size
     if calm is not None:  # (the windows holding a sample not calm left out)
         inside = np.concatenate([np.zeros((1, calm.shape[1]), int), np.cumsum(~calm, axis=0)])
         keep = inside[k + 1:] - inside[:-k - 1] == 0
-        d, means = np.where(keep, d, 0.0), np.where(keep, means, 0.0)
-        n_kept = int(np.count_nonzero(keep))
-    # (the rms over the windows kept: the left-out ones' zeros diluted it, so a log whose first seconds carry no motor
-    # acceleration went unjudged, an audit of stop 105, 2026-12-02; fewer than DERIVATIVE_MIN_WINDOWS kept judge
-    # nothing, their noise would: a review)
-    if n_kept < DERIVATIVE_MIN_WINDOWS or np.sqrt(np.sum(d**2) / n_kept) < judged:
+        # (the rms over the windows kept: the left-out ones, counted as zeros, diluted it, so a log whose first seconds
+        # carry no motor acceleration went unjudged, an audit of stop 105, 2026-12-02)
+        d, means = d[keep], means[keep]
+    # (fewer than DERIVATIVE_MIN_WINDOWS windows judge nothing, their noise would: a review)
+    if d.size < DERIVATIVE_MIN_WINDOWS or np.sqrt(np.mean(d**2)) < judged:
         return None
     ld, dd, ll = float(np.sum(means * d)), float(np.sum(d * d)), float(np.sum(means * means))
     lo, hi = ANGULAR_ACCELERATION_RATIO

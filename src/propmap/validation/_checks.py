@@ -9,10 +9,10 @@ from ..core.solver import _check_params
 from ..identify.load_data import LoadData
 from ..io.catalogue import CatalogueEntry
 
-_GIVEN_NONE = object()
+_NOT_GIVEN = object()
 
 
-def check_inputs(propeller, params: dict, *, data=_GIVEN_NONE, entry=_GIVEN_NONE) -> None:
+def check_inputs(propeller, params: dict, *, data=_NOT_GIVEN, entry=_NOT_GIVEN) -> None:
     """Refuse arguments of the wrong type, each named.
 
     Parameters
@@ -31,10 +31,10 @@ def check_inputs(propeller, params: dict, *, data=_GIVEN_NONE, entry=_GIVEN_NONE
     TypeError
         Naming the first argument of the wrong type.
     """
-    if data is not _GIVEN_NONE and not isinstance(data, LoadData):
+    if data is not _NOT_GIVEN and not isinstance(data, LoadData):
         raise TypeError(f"data must be a propmap LoadData (propmap.identify.loads_from_catalogue, read_loads, ...), "
                         f"got {type(data).__name__}")
-    if entry is not _GIVEN_NONE and not isinstance(entry, CatalogueEntry):
+    if entry is not _NOT_GIVEN and not isinstance(entry, CatalogueEntry):
         raise TypeError(f"entry must be a CatalogueEntry (propmap.catalogue()[name]), got {type(entry).__name__}")
     if not isinstance(propeller, Propeller):
         raise TypeError(f"propeller must be a Propeller (propmap.load_propeller, read_geometry), got "
