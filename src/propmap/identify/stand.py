@@ -151,7 +151,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     _refuse_wind_axes_and_rates(cm, split, bases, stems, error)
     _refuse_unread_flow(cm, split, bases, stems, error)
     if "collective_deg" not in cm.columns:
-        _refuse_pitch_like(names, error)
+        _refuse_pitch_like(names, error, cm.notes)
     if "thrust" not in cm.columns or ("drag" not in cm.columns and "airspeed" in cm.columns):
         _note_unread_force(cm, split)
     if "torque" not in cm.columns:

@@ -70,6 +70,44 @@ def _flow_angle_words(base: str) -> str | None:
     return "only" if set(words) <= _ANGLE_WORDS | _FLOW_WORDS else "among"
 
 
+#: words beside a blade pitch's (pitch, collective, blade angle) that keep a name a blade pitch setting's: the
+#: station it is taken at (Blade angle 75% (deg), blade_pitch_75_deg, pitch at 0.75R) and the blade's own words
+_PITCH_WORDS = frozenset(("pitch", "collective", "blade", "blades", "angle", "setting", "set", "geometric", "prop",
+                          "propeller", "rotor", "at", "r", "tip", "of", "radius", "station", "nominal"))
+#: words that make a name with 'pitch' in it something else (an attitude, a rate, a moment, a ratio, a length)
+_NOT_PITCH = frozenset(("rate", "moment", "pitching", "ratio", "acc", "accel", "acceleration", "gyro", "imu",
+                        "attitude", "body", "vehicle", "sting", "mount", "rig", "tunnel", "shaft", "disk", "disc",
+                        "stand", "in", "inch", "inches", "mm", "cm", "m", "diameter", "length", "flow", "wind"))
+
+
+def _pitch_words(base: str) -> str | None:
+    """"only" where the column name ``base`` (its unit removed) names a blade pitch setting and
+    where on the blade it is taken (``blade angle 75%``, ``blade_pitch_75_deg``, ``pitch at
+    0.75r``), "among" where a blade pitch's words stand among others (``pitch trim``), else None
+    (no pitch, or a vehicle's or a rig's pitch, a rate, a moment, a pitch in a length's unit)."""
+    words = [w for w in re.split(r"[\s_\-]+", base.lower()) if w]
+    if words and _token(words[-1]) in UNITS["angle"]:  # (a unit after an underscore: blade_pitch_75_deg)
+        words = words[:-1]
+    is_pitch = "pitch" in words or "collective" in words or (
+        {"blade", "blades"} & set(words) and {"angle", "setting"} & set(words))
+    if not is_pitch or _NOT_PITCH.intersection(words):
+        return None
+    station = [w for w in words if re.fullmatch(r"[\d.,/%]+r?", w)]
+    if [w for w in words if w not in _PITCH_WORDS and w not in station]:
+        return "among"
+    # (the blade's own words or a station make it a blade's; 'angle_pitch', 'prop pitch' may be an attitude's)
+    blade = station or {"blade", "blades", "collective", "setting", "set", "geometric"} & set(words)
+    return "only" if blade or " ".join(words) in _loose(_PITCH_LIKE) else None
+
+
+def _blade_pitch(base: str) -> bool:
+    """Whether the column name ``base`` (its unit removed) is a blade pitch setting's alone and
+    more than a bare 'pitch' or 'pitch angle', which beside an airspeed may be the flow's angle (a
+    tunnel sting's)."""
+    words = {w for w in re.split(r"[\s_\-]+", base.lower()) if w and _token(w) not in UNITS["angle"]}
+    return _pitch_words(base) == "only" and " ".join(sorted(words)) not in ("pitch", "angle pitch")
+
+
 _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
 #: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
 #: propeller); a unit 'kN' is a force (kilonewton), not knots
@@ -198,14 +236,16 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
         kind = "speed" if quantity == "airspeed" else "angle"
         if quantity == "airspeed" or flow:
             like += [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS[kind]
-                     and not (kind == "speed" and ("N" in u or _NOT_AIRSPEED.search(b)))]
+                     and not (kind == "speed" and ("N" in u or _NOT_AIRSPEED.search(b)))
+                     and not (kind == "angle" and _blade_pitch(b))]  # (refused as a blade pitch: 'Blade angle 75%')
         if kind == "speed":  # a velocity's symbol with a speed's unit after an underscore (V_mps, U_ms)
             like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and n not in like
                      and _speed_stem(b) in _loose(_VELOCITY_SYMBOLS)]
         if kind == "angle" and flow:  # an angle's unit after an underscore (tilt_deg, beta_rad)
             like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and "_" in b
                      and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like
-                     and not re.search(r"temp", b)]  # (temp_deg, motor_temp_degrees: a temperature)
+                     and not re.search(r"temp", b)  # (temp_deg, motor_temp_degrees: a temperature)
+                     and not _blade_pitch(b)]
             # a name of a flow angle's words alone, without a unit or in an angle's (alpha_angle, tilt_angle, theta,
             # wind_angle, alpha_prop were left unread beside an airspeed, every point axial: 28% thrust error, exit 0,
             # a wind-tunnel data audit, 2026-12-02); one with other words too (phase_angle, coning angle, theta_75,
@@ -295,19 +335,28 @@ def _note_unread_moment(cm: ColumnMap, split: dict) -> None:
                         "moment about the in-plane airspeed's direction: docs/conventions.md)")
 
 
-def _refuse_pitch_like(names, error) -> None:
+def _refuse_pitch_like(names, error, notes: list | None = None) -> None:
     """Refuse a blade pitch setting under another name than collective_deg, in degrees, radians or
-    no unit (``Pitch (deg)``, ``pitch``, ``blade_angle_deg``): left unread, every point was taken at
-    collective 0 (an input fuzzing audit, 2026-11-27); a pitch in inches is not one."""
+    no unit (``Pitch (deg)``, ``pitch``, ``blade_angle_deg``, ``Blade angle 75% (deg)``): left
+    unread, every point was taken at collective 0 (an input fuzzing audit, 2026-11-27); a pitch in
+    inches is not one. A blade pitch's words among others (``pitch trim``) get a note in
+    ``notes`` where one is given."""
     for name in names:
         if not name.strip():
             continue
         b, u = split_header(name)
         if b in _NAMES or not (u is None or _token(u) in UNITS["angle"]):
             continue
-        if (_name_stems(name) | {b}) & _loose(_PITCH_LIKE):
+        words = _pitch_words(b)
+        # (the station's words beside it, 'Blade angle 75% (deg)', 'blade_pitch_75_deg', were left unread, every
+        # point at collective 0 without a word, 2026-12-02)
+        if (_name_stems(name) | {b}) & _loose(_PITCH_LIKE) or words == "only":
             raise error(f"column {name!r} looks like a blade pitch setting, which propmap reads only as "
                         "'collective_deg' (the angle added to the geometry's blade angles at every station, "
                         "[deg]; a tunnel sting's pitch, the flow's angle to the rotor axis, is 'incidence_deg'): "
-                        "rename it, converted, or remove it; left unread, every point would be taken at the "
-                        "geometry's blade angles (collective 0)")
+                        "rename it, converted (a measured blade angle less the geometry's at the same station), or "
+                        "remove it; left unread, every point would be taken at the geometry's blade angles "
+                        "(collective 0)")
+        if words == "among" and notes is not None:
+            notes.append(f"column {name!r} is not read; if it is a blade pitch setting, name it 'collective_deg' (the "
+                         "angle added to the geometry's blade angles, [deg]); every point is taken at collective 0")
