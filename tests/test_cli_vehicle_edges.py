@@ -407,4 +407,4 @@ def test_a_rotor_table_with_location_for_position_names_the_unknown_key(tmp_path
     path.write_text(src.read_text().replace("position =", "location =", 1))
     code = main(["trim-vehicle", "--vehicle", str(path)])
     err = capsys.readouterr().err
-    assert code == 2 and "rotor 1: unknown key(s) location (allowed: " in err, err
+    assert code == 2 and "rotor 1: unknown key(s) location: did you mean position? (allowed: " in err, err

@@ -64,3 +64,31 @@ def test_a_bare_pitch_beside_an_airspeed_is_still_refused_as_a_flow_angle(tmp_pa
     angle: refused as a flow angle, whose message names collective_deg too."""
     with pytest.raises(DataError, match=f"column '{re.escape(name)}' looks like a flow angle.*'collective_deg'"):
         read_loads(_sweep(tmp_path / "s.csv", name, airspeed=True))
+
+
+# ---- unknown keys of a parameter file's tables and a vehicle file: the nearest valid one (io/toml_file.py) -----------
+@pytest.mark.parametrize("table, typo, meant", [("body", "wash_factr", "wash_factor"), ("coverage", "J_maxx", "J_max"),
+                                                ("vehicle", "gravty", "gravity"), ("rotor", "Spin", "spin")])
+def test_an_unknown_key_in_a_table_names_the_nearest_valid_one(tmp_path, capsys, table, typo, meant):
+    """A parameter file's top level said 'did you mean cl_alpha?' for 'cl_alhpa', its [body] and [coverage] tables and
+    the vehicle file only listed every valid key (2026-12-02)."""
+    from pathlib import Path
+
+    import propmap as pm
+
+    examples = Path(pm.__file__).parent / "data" / "examples"
+    if table in ("body", "coverage"):
+        text = (examples / "neurobem_quadrotor.params.toml").read_text()
+        key = {"body": "wash_factor =", "coverage": "J_max ="}[table]
+        path = tmp_path / "p.toml"
+        path.write_text(text.replace(key, f"{typo} =", 1))
+        args = ["loads", "apce_8x6", "--rpm", "5000", "--params", str(path)]
+    else:
+        text = (examples / "quadrotor.toml").read_text()
+        key = {"vehicle": "gravity =", "rotor": "spin ="}[table]
+        path = tmp_path / "v.toml"
+        path.write_text(text.replace(key, f"{typo} =", 1))
+        args = ["trim-vehicle", "--vehicle", str(path), "--airspeed", "0"]
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert re.search(rf"unknown key\(s\) '?{typo}'?: did you mean {meant}\? \((allowed|valid): ", err), err

@@ -91,7 +91,6 @@ text keys (``comment``, ``source``) must be TOML strings.
 from __future__ import annotations
 
 import contextlib
-import difflib
 import functools
 import math
 import os
@@ -109,7 +108,7 @@ from .atomic import atomic_write
 from .inputs import as_path, show_path
 from .params_tables import (BODY_TABLE, COVERAGE_KEYS, COVERAGE_SINGLE_TEXTS, COVERAGE_TABLE, COVERAGE_TEXT_KEYS,
                             BodyTable, body_from_dict, check_number, coverage_from_dict, short_repr)
-from .toml_file import load_toml
+from .toml_file import did_you_mean, load_toml
 
 __all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "params_to_dict",
            "params_from_dict", "body_from_dict", "coverage_from_dict", "read_coverage", "set_coverage",
@@ -225,8 +224,7 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
         shown = ", ".join(short_repr(k, 40) if not k.isidentifier() else k for k in unknown[:5])
         more = f" and {len(unknown) - 5} more" if len(unknown) > 5 else ""
         known = sorted(set(keys) | set(AIR_KEYS) | set(TEXT_KEYS) | {BODY_TABLE, COVERAGE_TABLE})
-        close = difflib.get_close_matches(unknown[0], known, n=1)  # (the valid keys named, an audit, stop 102)
-        hint = f": did you mean {close[0]}?" if close else ""
+        hint = did_you_mean(unknown, known)  # (the valid keys named, an audit, stop 102)
         raise ValueError(f"{where}: unknown key(s) {shown}{more} for section_model {model!r}{hint} (its keys: "
                          f"{', '.join(known)})")
     for key in ("comment", "source"):

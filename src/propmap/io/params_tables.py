@@ -10,6 +10,8 @@ import math
 import numbers
 from typing import NamedTuple
 
+from .toml_file import did_you_mean
+
 __all__ = ["BODY_TABLE", "COVERAGE_KEYS", "COVERAGE_SINGLE_TEXTS", "COVERAGE_TEXT_KEYS", "COVERAGE_TABLE", "BodyTable",
            "body_from_dict", "check_number", "coverage_from_dict", "short_repr"]
 
@@ -99,8 +101,9 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
         raise ValueError(f"{where}: [{COVERAGE_TABLE}] must be a table, got {short_repr(table)}")
     unknown = sorted(set(table) - set(COVERAGE_KEYS) - set(COVERAGE_TEXT_KEYS))
     if unknown:
-        raise ValueError(f"{where}: [{COVERAGE_TABLE}] unknown key(s) {', '.join(map(str, unknown[:5]))} (valid: "
-                         f"{', '.join([*COVERAGE_KEYS, *COVERAGE_TEXT_KEYS])})")
+        valid = [*COVERAGE_KEYS, *COVERAGE_TEXT_KEYS]
+        raise ValueError(f"{where}: [{COVERAGE_TABLE}] unknown key(s) {', '.join(map(str, unknown[:5]))}"
+                         f"{did_you_mean(unknown, valid)} (valid: {', '.join(valid)})")
     text = {}
     for k, v in table.items():
         if k not in COVERAGE_TEXT_KEYS:  # (a diameter and a Reynolds number of 0 are no data's: open below)
@@ -158,8 +161,8 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
     allowed = ("drag_area", "wash_factor", "centre_of_mass", "rotor_interference", "comment")
     extra = sorted(str(k) for k in table if k not in allowed)
     if extra:
-        raise ValueError(f"{where}: [body]: unknown key(s) {', '.join(short_repr(k, 40) for k in extra[:5])} "
-                         f"(allowed: {', '.join(allowed)})")
+        raise ValueError(f"{where}: [body]: unknown key(s) {', '.join(short_repr(k, 40) for k in extra[:5])}"
+                         f"{did_you_mean(extra, allowed)} (allowed: {', '.join(allowed)})")
     if "drag_area" not in table:
         raise ValueError(f"{where}: [body]: missing key 'drag_area'")
     vectors = {}

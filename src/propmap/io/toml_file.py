@@ -7,13 +7,14 @@ a regular file only (never a directory, a device or a pipe), at most
 
 from __future__ import annotations
 
+import difflib
 import re
 import tomllib
 from pathlib import Path
 
 from .inputs import MAX_SMALL_FILE_BYTES, decode_input_text, read_input_bytes, show_path
 
-__all__ = ["load_toml"]
+__all__ = ["load_toml", "did_you_mean"]
 
 
 def load_toml(path: Path, error: type[ValueError]) -> dict:
@@ -64,3 +65,26 @@ def _line_shown(text: str, message: str) -> str:
     # (control characters escaped as tomllib's own part escapes them: a terminal would act on them, a review)
     shown = "".join(c if c.isprintable() else repr(c)[1:-1] for c in shown)
     return f"; line {found.group(1)}: {shown[:100]}{' ...' if len(shown) > 100 else ''}"
+
+
+def did_you_mean(unknown, allowed) -> str:
+    """The hint for a table's unknown key: ``": did you mean KEY?"`` for the allowed key nearest
+    the first unknown one (:func:`difflib.get_close_matches`, case ignored), else ``""``.
+
+    Parameters
+    ----------
+    unknown : sequence of str
+        The unknown keys, as written.
+    allowed : iterable of str
+        The table's keys.
+
+    Returns
+    -------
+    str
+        The hint, starting with ``": "``, or the empty string.
+    """
+    allowed = list(allowed)
+    lowered = {k.lower(): k for k in allowed}
+    first = str(unknown[0]) if len(unknown) else ""
+    close = difflib.get_close_matches(first.lower(), list(lowered), n=1)
+    return f": did you mean {lowered[close[0]]}?" if close else ""

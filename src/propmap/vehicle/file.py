@@ -75,7 +75,7 @@ from ..core.body import BodyDrag
 from ..io.inputs import as_path, short_path, show_path
 from ..io.params_tables import POSITION_MAX  # [m], each component
 from ..io.qprop_file import _qprop_from
-from ..io.toml_file import load_toml
+from ..io.toml_file import did_you_mean, load_toml
 from ._plausibility import _warn_implausible
 from .layout import INERTIA_MAX, Rotor, Vehicle, check_inertia
 
@@ -138,7 +138,8 @@ def _unknown(table: dict, allowed, where: str) -> None:
     extra = sorted(str(k) for k in table if k not in allowed)
     if extra:
         shown = ", ".join(k if k.isidentifier() else short_repr(k, 40) for k in extra[:5])
-        raise VehicleFileError(f"{where}: unknown key(s) {shown} (allowed: {', '.join(allowed)})")
+        raise VehicleFileError(f"{where}: unknown key(s) {shown}{did_you_mean(extra, allowed)} "
+                               f"(allowed: {', '.join(allowed)})")
 
 
 def _inertia(value, what: str) -> np.ndarray:
