@@ -33,6 +33,12 @@ COLUMNS = {
              "Overall Efficiency (kgf/W)", "Temperature 1 (°C)", "Pressure (Pa)", "App message"],
 }
 COLUMNS["1585"] = COLUMNS["1580"]
+#: Tyto's Flight Stand software: every channel but the time after its powertrain's name (as public analysis scripts
+#: of its exports name them); its Fz is negative for a tractor's thrust
+COLUMNS["flightstand"] = ["Time (s)", *(f"Powertrain 1 - {c}" for c in (
+    "ESC throttle (μs)", "force Fz (thrust) ({u})", "torque MZ (torque) (N⋅m)", "voltage (V)", "current (A)",
+    "rotation speed (rpm)", "electrical power (W)", "mechanical power (W)", "motor & ESC efficiency (%)",
+    "propeller efficiency ({u}/W)", "powertrain efficiency ({u}/W)"))]
 
 
 def write_steps_export(path, *, series="1585", thrust_unit="gf", prop="apce_8x6", params=None, pole_pairs=7,
@@ -69,9 +75,15 @@ def write_steps_export(path, *, series="1585", thrust_unit="gf", prop="apce_8x6"
             truth.append((target, float(r.thrust), float(r.torque)))
     cols = [c.replace("{u}", thrust_unit) for c in COLUMNS[series]]
     lines = [",".join(cols)]
+    flight_stand = series == "flightstand"
     for (t, esc, rpm, T, Q) in rows:
         vals = []
         for c in cols:
+            c = c.split(" - ", 1)[1] if flight_stand and " - " in c else c
+            c = {"ESC throttle (μs)": "ESC signal (µs)", "rotation speed (rpm)": "Motor Optical Speed (RPM)"}.get(c, c)
+            if c.startswith("force Fz"):
+                T, c = -T, c.replace("force Fz (thrust)", "Thrust")
+            c = c.replace("torque MZ (torque)", "Torque")
             if c == "Time (s)":
                 vals.append(f"{t:.3f}")
             elif c == "ESC signal (µs)":

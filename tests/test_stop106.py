@@ -92,3 +92,59 @@ def test_an_unknown_key_in_a_table_names_the_nearest_valid_one(tmp_path, capsys,
     assert main(args) == 2
     err = capsys.readouterr().err
     assert re.search(rf"unknown key\(s\) '?{typo}'?: did you mean {meant}\? \((allowed|valid): ", err), err
+
+
+# ---- Tyto's Flight Stand exports (identify/stand.py; a thrust-stand export audit, 2026-12-02) ------------------------
+def test_a_flight_stand_export_is_read_through_its_powertrain_prefix(tmp_path):
+    """A Flight Stand export ('Powertrain 1 - force Fz (thrust) (kgf)', 'Powertrain 1 - rotation speed (rpm)', ...) was
+    refused (no rotation-speed column); its thrust, negative on the stand's Fz axis, was said to come from 'a pusher
+    mount'. The loads are propmap's own (tests/stand_exports.py), so the steps read are checked against them."""
+    import numpy as np
+
+    from stand_exports import write_steps_export
+
+    path = tmp_path / "fs.csv"
+    truth = write_steps_export(path, series="flightstand", thrust_unit="kgf", steps=(1000, *range(1200, 1900, 100)))
+    data = read_loads(path)
+    assert data.n == len(truth) == 7
+    np.testing.assert_allclose(data.measured["thrust"], truth[:, 1], rtol=0.01)
+    np.testing.assert_allclose(data.measured["torque"], truth[:, 2], rtol=0.01)
+    assert data.notes[0] == ("the powertrain's prefix 'Powertrain 1 - ' is dropped from 11 column names (a Flight "
+                             "Stand export)")
+    assert "'Powertrain 1 - force Fz (thrust) (kgf)' converted to N (x 9.80665)" in data.notes, data.notes
+    assert any(n.startswith("thrust negated: 'Powertrain 1 - force Fz (thrust) (kgf)'") and "force axis Fz points "
+               "along the slipstream" in n and "pusher" not in n for n in data.notes), data.notes
+
+
+def test_a_flight_stand_export_of_two_powertrains_is_refused(tmp_path):
+    """Two powertrains' columns: one isolated rotor is fitted, so the file is refused naming both (after stripping one
+    prefix, the other's columns were dropped without a word)."""
+    head = ["Time (s)", *(f"Powertrain {k} - {c}" for k in (1, 2) for c in (
+        "ESC throttle (μs)", "force Fz (thrust) (N)", "torque MZ (torque) (N⋅m)", "rotation speed (rpm)"))]
+    rows = "".join(f"{0.1 * i:.1f},{1100 + 100 * (i // 8)},-1.0,-0.02,{3000 + 500 * (i // 8)},"
+                   f"{1100 + 100 * (i // 8)},-1.0,-0.02,{3000 + 500 * (i // 8)}\n" for i in range(48))
+    (tmp_path / "two.csv").write_text(",".join(head) + "\n" + rows, encoding="utf-8")
+    with pytest.raises(DataError, match=r"columns of 2 powertrains \('Powertrain 1', 'Powertrain 2'\).*one isolated "
+                                        "rotor"):
+        read_loads(tmp_path / "two.csv")
+
+
+def test_a_name_unit_table_is_not_taken_for_a_powertrain_prefix(tmp_path):
+    """Guard (read before): a prefix borne by fewer than 3 columns, or whose columns give no speed or load ('Ambient -
+    temperature (C)'), is kept: 'Test - 1' and 'Ambient - ...' are other columns' names."""
+    rows = "".join(f"{3000 + 500 * k},{0.5 + 0.3 * k},x,20,1013\n" for k in range(6))
+    path = tmp_path / "t.csv"
+    path.write_text("rpm,thrust (N),Test - 1,Ambient - temperature (C),Ambient - pressure (hPa)\n" + rows)
+    data = read_loads(path)
+    assert data.n == 6 and not any("powertrain" in n for n in data.notes)
+
+
+def test_a_logger_time_in_milliseconds_is_read_as_the_time(tmp_path):
+    """A logger's 'Time_ms' was not read, and its raw samples were fitted as points without a word: it is the time
+    column now, so the rows-as-points note names it."""
+    rows = "".join(f"{20 * i},{3000 + 10 * i},{0.5 + 0.001 * i}\n" for i in range(60))
+    path = tmp_path / "log.csv"
+    path.write_text("Time_ms,RPM,Thrust_g\n" + rows)
+    data = read_loads(path)
+    assert data.n == 60
+    assert any("the file has a time column ('Time_ms') but no ESC signal column" in n for n in data.notes), data.notes

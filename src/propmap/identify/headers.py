@@ -28,7 +28,9 @@ _ESC_UNITS = {"us": "us", "microseconds": "us", "microsecond": "us", "%": "pct",
 #: every raw sample of a steps test fitted as a point: a thrust-stand export audit, 2026-11-27)
 _ESC_ALIASES = ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc pulse width", "throttle signal",
                 # (Tyto's database exports: 'PWM throttle signal (µs)' was left unread, an export audit, 2026-12-02)
-                "pwm throttle signal", "pwm throttle")
+                "pwm throttle signal", "pwm throttle",
+                # (Tyto's Flight Stand exports, after the powertrain's prefix: stand.map_columns)
+                "esc throttle")
 #: other names of the thrust, read where no 'thrust' column is (beside one, with a note that they are not read)
 _THRUST_ALIASES = ("static thrust", "average thrust", "avg thrust", "avg. thrust", "mean thrust", "thrust avg",
                    "thrust average", "thrust mean")
@@ -84,6 +86,8 @@ AXIAL_RATES = ("descent_rate", "climb_rate")
 #: the names each quantity is recognised by (lower case, without unit); value: (quantity, kind)
 _NAMES = {
     "thrust": ("thrust", "force"), "drag": ("drag", "force"), "torque": ("torque", "torque"),
+    # Tyto's Flight Stand exports, after the powertrain's prefix ('Powertrain 1 - force Fz (thrust) (N)': stand.py)
+    "force fz (thrust)": ("thrust", "force"), "torque mz (torque)": ("torque", "torque"),
     # German stands' exports (Schub, Drehmoment, Drehzahl [U/min]: a user-level audit, 2026-11-28)
     "schub": ("thrust", "force"), "schubkraft": ("thrust", "force"), "drehmoment": ("torque", "torque"),
     "drehzahl": ("rpm", "rotation"),
@@ -124,6 +128,10 @@ _NAMES = {
     "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
     **{name: ("esc", None) for name in _ESC_ALIASES},
     "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
+    # (a logger's 'Time_ms' was not read and its 800 raw samples fitted as points without a word: a thrust-stand
+    # export audit, 2026-12-02; the time's unit is not needed, only its gaps)
+    **dict.fromkeys(("time_ms", "time_us", "time_sec", "timestamp", "time stamp", "timestamp_ms", "timestamp_s"),
+                    ("time", None)),
     # a tunnel's run labels under another name (a 'Run' column was read as nothing, and --holdout found one group
     # 'all': a wind-tunnel data audit, 2026-11-30)
     **dict.fromkeys(_GROUP_ALIASES, ("group", None)),

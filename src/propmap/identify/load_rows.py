@@ -11,6 +11,8 @@ data's notes, which ``propmap fit loads`` prints); a file they cannot read raise
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from .csvfile import DataError
@@ -134,10 +136,12 @@ def _thrust_sign(v: dict, column: str, notes: list) -> np.ndarray:
     big = _significant(t)
     static = big & (v["airspeed"] <= STATIC_AIRSPEED) & (v.get("collective_deg", np.zeros(t.size)) >= 0)
     if static.any() and np.all(t[static] < 0):
+        # (a Flight Stand's 'force Fz (thrust)' is negative as its axis is: 'a pusher mount' misled, an export audit)
+        why = ("the stand's force axis Fz points along the slipstream (as a Flight Stand's does)"
+               if re.search(r"\bf ?z\b", column.lower()) else "a pusher mount or a stand mounted the other way round")
         notes.append(f"thrust negated: {column!r} is negative at every static point "
-                     f"({int(static.sum())}; {int(np.sum(t[big] < 0))} of {int(big.sum())} points negative): a "
-                     "pusher mount or a stand mounted the other way round; propmap's thrust is positive in the "
-                     "direction the propeller pulls, opposite to its slipstream")
+                     f"({int(static.sum())}; {int(np.sum(t[big] < 0))} of {int(big.sum())} points negative): {why}; "
+                     "propmap's thrust is positive in the direction the propeller pulls, opposite to its slipstream")
         return -t
     return t
 

@@ -6,7 +6,10 @@ it is not the SI one, a unit: ``thrust``, ``thrust_kgf``, ``Thrust (gf)``, ``tor
 thrust stands (Series 1520, 1580, 1585, 1780: ``Time (s)``, ``ESC signal (µs)``,
 ``Thrust (kgf)`` or ``(gf)``, ``(N)``, ``(lbf)``, ``Torque (N·m)`` (not on the 1520),
 ``Motor Electrical Speed (RPM)``, ``Motor Optical Speed (RPM)``, ...; UTF-8 with a byte-order
-mark), as the stand's software writes them; the rotation speed also as ``Motor Speed (RPM)``,
+mark), as the stand's software writes them, and Tyto's Flight Stand exports, every channel after
+its powertrain's name (``Powertrain 1 - force Fz (thrust) (N)``, ``Powertrain 1 - torque MZ
+(torque) (N⋅m)``, ``Powertrain 1 - rotation speed (rpm)``, ``Powertrain 1 - ESC throttle (μs)``:
+the prefix is dropped); the rotation speed also as ``Motor Speed (RPM)``,
 ``rotor_speed_hz``, ``Rotational speed (rad/s)``, ``propeller speed``, ``Prop Speed``, ``Motor RPM``,
 ``omega`` (rad/s without a unit), ``n (rev/s)`` or ``n (1/min)`` (the symbol of a rotational frequency, read
 only with its unit; its ``1/s`` is a revolution per second). This module maps the columns; :mod:`propmap.identify.steps`
@@ -39,6 +42,8 @@ is not read.
 
 from __future__ import annotations
 
+import re
+
 from ..core._numbers import integer
 # (the vocabulary and the unread columns' checks live in .headers and .unread; the names other modules and users
 # import from here are re-exported)
@@ -49,6 +54,43 @@ from .unread import (_note_unread_force, _note_unread_moment, _refuse_no_load, _
 
 __all__ = ["ColumnMap", "map_columns", "map_operating_columns", "split_header", "UNITS", "ROTATION_COLUMNS",
            "OPERATING", "LOOKED_FOR", "G0", "LBF", "INCH"]
+
+
+#: a column name after a powertrain's prefix, as Tyto's Flight Stand software writes its exports ('Powertrain 1 - force
+#: Fz (thrust) (N)', 'Powertrain 1 - rotation speed (rpm)'; the powertrain as the user named it)
+_PREFIXED = re.compile(r"^\s*(\S.*?)\s+-\s+(\S.*)$")
+#: the quantities that make a prefix a powertrain's: a column of it, without the prefix, gives one of them
+_POWERTRAIN_READS = frozenset(("thrust", "torque", "drag", *ROTATION_COLUMNS))
+
+
+def _powertrain_columns(names: list, error) -> tuple[list, dict, str | None]:
+    """(names, original, note): a Flight Stand export's column names without their powertrain's
+    prefix, each stripped name's name as written, and a note saying so; the names as they are
+    where no prefix is a powertrain's (3 columns or more, one a rotation speed or a load).
+
+    Every column was refused before (no rotation-speed column: a thrust-stand export audit,
+    2026-12-02). Two powertrains' columns are refused: propmap fits one isolated rotor."""
+    groups: dict[str, list] = {}
+    for name in names:
+        if m := _PREFIXED.match(name):
+            groups.setdefault(m.group(1), []).append(name)
+
+    def reads(name: str) -> bool:
+        entry = _entry(*split_header(_PREFIXED.match(name).group(2)))
+        return entry is not None and entry[0] in _POWERTRAIN_READS
+
+    trains = [p for p, cols in groups.items() if len(cols) >= 3 and any(map(reads, cols))]
+    if not trains:
+        return names, {}, None
+    if len(trains) > 1:
+        raise error(f"columns of {len(trains)} powertrains ({', '.join(repr(t) for t in trains[:4])}), as a Flight "
+                    "Stand export of several motors writes them: propmap fits one isolated rotor, so write one "
+                    "powertrain's columns (and the time's) to a file of their own")
+    ours = set(groups[trains[0]])
+    stripped = [_PREFIXED.match(n).group(2) if n in ours else n for n in names]
+    return stripped, dict(zip(stripped, names)), (
+        f"the powertrain's prefix {trains[0] + ' - '!r} is dropped from {len(ours)} column names (a Flight Stand "
+        "export)")
 
 
 def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None = None,
@@ -100,8 +142,22 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         speed (m/s)``) where no airspeed is, or an angle's (``Shaft angle (deg)``) where an
         airspeed is read and no incidence, a wind tunnel's ``lift`` column (the loads are read in
         the rotor's axes; the message gives the conversion), a rotation speed in a speed's unit (``Speed (m/s)``),
-        an unknown ``rpm_source``, or a ``pole_pairs`` outside [1, 50].
+        an unknown ``rpm_source``, or a ``pole_pairs`` outside [1, 50], or the columns of two
+        powertrains of a Flight Stand export (``Powertrain 1 - ...``, ``Powertrain 2 - ...``; one
+        powertrain's prefix is dropped from its names, with a note).
     """
+    names, original, note = _powertrain_columns(list(names), error)
+    cm = _map_columns(names, rpm_source, pole_pairs, error)
+    if original:  # (the file's columns are read, and named in the notes, by their names as written)
+        cm.columns = {q: (original[c[0]], *c[1:]) for q, c in cm.columns.items()}
+        for short, name in original.items():
+            cm.notes = [n.replace(repr(short), repr(name)) for n in cm.notes]
+        cm.notes.insert(0, note)
+    return cm
+
+
+def _map_columns(names: list, rpm_source, pole_pairs, error) -> ColumnMap:
+    """map_columns' mapping of the ``names`` (a powertrain's prefix dropped)."""
     cm = ColumnMap()
     converted: dict[str, str] = {}  # a column's note that its unit is converted, dropped where the column gives way
     for name in names:
