@@ -148,3 +148,29 @@ def test_a_logger_time_in_milliseconds_is_read_as_the_time(tmp_path):
     data = read_loads(path)
     assert data.n == 60
     assert any("the file has a time column ('Time_ms') but no ESC signal column" in n for n in data.notes), data.notes
+
+
+def test_a_name_dash_unit_header_is_read(tmp_path):
+    """A stand log's 'Thrust - gf', 'Torque - N*m' (the unit after ' - ') was refused as 'lines above the header?';
+    a clock-time 'Timestamp' beside them stays unread (not taken for the time column and refused as not a number)."""
+    rows = "".join(f"10:12:{k:02d}.250,{30 + 10 * k},{3000 + 800 * k},{(1 + k) ** 2 * 40:.1f},"
+                   f"{(1 + k) ** 2 * 0.001:.4f}\n" for k in range(7))
+    path = tmp_path / "ly.csv"
+    path.write_text("Timestamp,Throttle - %,RPM,Thrust - gf,Torque - N*m\n" + rows)
+    data = read_loads(path)
+    assert data.n == 7
+    assert data.measured["thrust"][0] == pytest.approx(0.040 * 9.80665) and data.measured["torque"][0] == 0.001
+    path.write_text("Timestamp,RPM1 - RPM,Thrust - gf\n" + "".join(f"10:12:0{k},{3000 + 500 * k},{50 + k}\n"
+                                                                    for k in range(7)))
+    with pytest.raises(DataError, match=r"column 'RPM1 - RPM' is in a rotation speed's unit but its name is not "
+                                        r"read: name it 'rpm' \(or 'Motor speed \(RPM\)'\)"):
+        read_loads(path)
+
+
+def test_an_airspeed_in_inches_per_second_is_read(tmp_path):
+    """'Wind Speed (in/s)' (a hobby tunnel logger's) was refused as an unknown unit."""
+    rows = "".join(f"6000,{0.5 - 0.05 * k:.3f},{100 * k}\n" for k in range(7))
+    path = tmp_path / "w.csv"
+    path.write_text("RPM,Thrust (N),Wind Speed (in/s)\n" + rows)
+    data = read_loads(path)
+    assert data.airspeed[-1] == pytest.approx(600 * 0.0254)

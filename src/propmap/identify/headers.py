@@ -72,7 +72,9 @@ UNITS = {
               "kn": 1852 / 3600,
               "kt": 1852 / 3600, "kts": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048,
               # (a vertical speed's unit: Sink rate (ft/min) was refused as an unknown unit, a review, 2026-12-01)
-              "ftmin": 0.00508, "fpm": 0.00508},
+              "ftmin": 0.00508, "fpm": 0.00508,
+              # (a hobby tunnel logger's 'Wind Speed (in/s)' was refused as an unknown unit: export audit, 2026-12-02)
+              "ins": INCH, "ips": INCH},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
     "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3, "lbft3": 16.018463373960138,
                 "lbft³": 16.018463373960138},
@@ -130,8 +132,8 @@ _NAMES = {
     "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
     # (a logger's 'Time_ms' was not read and its 800 raw samples fitted as points without a word: a thrust-stand
     # export audit, 2026-12-02; the time's unit is not needed, only its gaps)
-    **dict.fromkeys(("time_ms", "time_us", "time_sec", "timestamp", "time stamp", "timestamp_ms", "timestamp_s"),
-                    ("time", None)),
+    # (not a bare 'Timestamp', which loggers write as a clock time, 10:12:00.250: such a file would be refused)
+    **dict.fromkeys(("time_ms", "time_us", "time_sec", "timestamp_ms", "timestamp_s"), ("time", None)),
     # a tunnel's run labels under another name (a 'Run' column was read as nothing, and --holdout found one group
     # 'all': a wind-tunnel data audit, 2026-11-30)
     **dict.fromkeys(_GROUP_ALIASES, ("group", None)),
@@ -325,6 +327,9 @@ def split_header(name: str) -> tuple[str, str | None]:
         return low, None
     if "," in low and low.rsplit(",", 1)[0].strip() in _PARSED:  # 'Thrust, N', 'Torque, N*m' (a unit after a comma)
         return low.rsplit(",", 1)[0].strip(), name.rsplit(",", 1)[1].strip()
+    if " - " in low and low.rsplit(" - ", 1)[0].strip() in _PARSED:  # 'Thrust - gf', 'Torque - N*m' (a stand's log:
+        # refused as 'lines above the header?', an export audit, 2026-12-02)
+        return low.rsplit(" - ", 1)[0].strip(), name.rsplit(" - ", 1)[1].strip()
     if " " in low:  # 'Thrust g', 'Thrust in g' (a known unit after a blank: read as a column of nothing, a user audit)
         base, unit = low.rsplit(" ", 1)
         base = re.sub(r"\s+in$", "", base.strip())

@@ -24,14 +24,14 @@ torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·m (kg·m), 
                 (g·cm), lbf·in (lb·in, in·lb), ozf·in (oz·in, oz-in, in·oz), lbf·ft (lb·ft, ft·lb)
 rotation speed  rpm (rev/min, r/min, 1/min, min^-1, U/min, tr/min, giri/min, obr/min), krpm, rad/s, Hz (rev/s,
                 rps)
-airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, kts, knots), ft/s (fps)
+airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, kts, knots), ft/s (fps), in/s
 angle           deg (degrees, °), rad
 air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
 ==============  ===================================================================
 
 1 kgf = 9.80665 N (the standard gravity, by definition); 1 lbf = 4.4482216152605 N;
 1 ozf = lbf / 16; 1 in = 0.0254 m. A unit follows the name in brackets, after a comma
-(``Thrust, N``), after a blank (``Thrust g``, ``Thrust in g``) or after an underscore
+(``Thrust, N``), after ``' - '`` (``Thrust - gf``), after a blank (``Thrust g``, ``Thrust in g``) or after an underscore
 (``thrust_kgf``); German names are read too (``Schub``, ``Drehmoment``, ``Drehzahl``), and Spanish,
 French and Italian ones where a unit of their quantity follows them (``Empuje (g)``, ``Par (N m)``,
 ``Velocidad (rpm)``; ``Poussée``, ``Couple``, ``Régime``, ``Vitesse``; ``Spinta``, ``Coppia``, ``Giri``:

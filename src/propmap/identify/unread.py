@@ -125,8 +125,10 @@ def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
     bare_n = [n for n in names if (b := split_header(n))[1] is None and _UNIT_ONLY_NAMES.get(b[0], ("",))[0] == "rpm"]
     # a column in a rotation unit under a name propmap does not read ('Velocidad (rpm)' was told of lines above the
     # header: a thrust-stand export audit, 2026-11-30)
-    in_rpm = [n for n in names
-              if n.strip() and (u := split_header(n)[1]) is not None and _token(u) in UNITS["rotation"]]
+    def unit(n):  # (a stand log's 'RPM1 - RPM' too)
+        return split_header(n)[1] or (n.rsplit(" - ", 1)[1].strip() if " - " in n else None)
+
+    in_rpm = [n for n in names if n.strip() and unit(n) is not None and _token(unit(n)) in UNITS["rotation"]]
     hint = ""
     if pair:
         hint = ("; this looks like a two-rotor export (a coaxial or dual stand, columns for rotors A and B): propmap "
@@ -134,7 +136,7 @@ def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
                 "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)")
     elif in_rpm:
         hint = (f"; column {in_rpm[0]!r} is in a rotation speed's unit but its name is not read: name it 'rpm' (or "
-                f"'Motor speed ({split_header(in_rpm[0])[1]})')")
+                f"'Motor speed ({unit(in_rpm[0])})')")
     elif bare_n:
         x = bare_n[0].strip()
         hint = (f"; column {bare_n[0]!r} is read as the rotation speed only with a rotation unit: '{x} (rev/s)', "
