@@ -89,14 +89,16 @@ def test_axial_data_beyond_90_deg_name_the_descent(tmp_path, capsys, apc8x6):
 
 
 def test_an_airspeed_beyond_the_datas_by_more_than_1_percent_is_warned_of(tmp_path, capsys, apc8x6):
-    """Mutants C7 (the airspeed margin 1% made 10%: 10.6 m/s beside 10 m/s unsaid) and C8 (the airspeed line said
-    beside an incidence line too)."""
+    """Mutant C7 (the airspeed margin 1% made 10%: 10.6 m/s beside 10 m/s unsaid); the airspeed line is said beside
+    an incidence line too since 2026-12-02 (it was left out there: a log at 15-18 m/s on a flight set fitted to 11.5
+    m/s was told only of its advance ratio, 0.25 against 0.24, an audit of faster flights)."""
     label = _fitted(tmp_path, J_max=2.0, incidence_deg_max=30.0, airspeed_max=10.0)
     assert _warnings(capsys, apc8x6, label, airspeed=10.6) == [
         f"propmap: warning: airspeed up to 10.6 m/s: the data behind {label} reach 10 m/s"]
     assert _warnings(capsys, apc8x6, label, airspeed=10.2) == []  # (within 1% and 0.1 m/s)
     lines = _warnings(capsys, apc8x6, label, airspeed=20.0, incidence_deg=45.0)
-    assert lines == [f"propmap: warning: incidence up to 45 deg: {label} was fitted to data up to 30 deg"]
+    assert lines == [f"propmap: warning: incidence up to 45 deg: {label} was fitted to data up to 30 deg",
+                     f"propmap: warning: airspeed up to 20 m/s: the data behind {label} reach 10 m/s"]
 
 
 @pytest.mark.parametrize("rpm, shown", [(2990.0, "2990"), (6030.0, "6030"), ((4000.0, 7000.0), "4000-7000")])
