@@ -135,3 +135,25 @@ def _rotor_coverage(veh, sets, loads, air) -> None:
             prop, rpm, np.concatenate([np.ravel(x.airspeed) for x in ld]),
             np.degrees(np.concatenate([np.ravel(x.incidence) for x in ld]))),
             rpm=(float(rpm.min()), float(rpm.max())), airspeed=float(max(np.max(x.airspeed) for x in ld)))
+
+
+def _descent_state_warning(loads, what: str, keep=None) -> list[str]:
+    """A warning where samples have a rotor in the vortex-ring or turbulent-wake state
+    (``loads``: a vehicle wrench's RotorLoads per rotor, over the samples; ``keep``: a mask of the
+    samples counted, default all; ``what`` names them): momentum theory is not predictive there,
+    and such samples carry the flight logs' largest force errors (docs/flight.md: on the race
+    track 6% of the samples, a mean Fz error of -1.1 N). Said by ``trim-vehicle`` and ``fit loads``
+    alike; ``wrench`` and ``fit flight`` said nothing (an audit of faster flights, 2026-12-02)."""
+    import numpy as np
+
+    from ..core.states import STATES
+
+    codes = [STATES.index("vortex ring"), STATES.index("turbulent wake")]
+    hit = np.any([np.isin(np.ravel(ld.state), codes) for ld in loads], axis=0)
+    if keep is not None:
+        hit = hit[np.asarray(keep, bool)]
+    if not hit.any():
+        return []
+    return [f"{int(hit.sum())} of {hit.size} samples of {what} ({100 * hit.mean():.1f}%) have a rotor in the "
+            "vortex-ring or turbulent-wake state (descending into its own wake), where momentum theory is not "
+            "predictive and the model's thrust is least certain (docs/flight.md: Where it is still wrong)"]

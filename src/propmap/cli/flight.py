@@ -15,7 +15,7 @@ from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond, j_max
 from ._flight_report import (NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table,
                              band_line)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
-from ._vehicle import _check_rotor_sets, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
+from ._vehicle import _check_rotor_sets, _descent_state_warning, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
 from .fit import _options, _out_files, _run_fit, _vehicle_propeller, _write_outputs, with_fit_options
 
 
@@ -265,6 +265,10 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         for lg in kept:
             beyond += _held_beyond([lg], {lg.name}, _flight_coverage([o for o in kept if o is not lg], veh, res.air),
                                    veh, res.air, "cross-validation: the fold of")
+    # (the samples fitted, then each held-out log's, with a rotor descending into its own wake)
+    beyond += _descent_state_warning(pred.loads, "the training logs", ~np.isin(samples.log_index, held_idx))
+    for k in held_idx:
+        beyond += _descent_state_warning(pred.loads, f"held-out log {names[k]}", samples.log_index == k)
     res = replace(res, warnings=res.warnings + tuple(beyond))
     _write_outputs(res, out, base_label, as_json, "\n".join(text),
                    figure=_figures(samples, names, held, pred, baselines, veh, res.params, air, vehicle),
@@ -564,3 +568,5 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     click.echo(f"wrote {out}", err=True)
     # the log's rotor operating points beyond the data behind the parameters (a fitted file's [coverage])
     _rotor_coverage(veh, sets, [[ld] for ld in w.loads], air)
+    for line in _descent_state_warning(w.loads, log.name):
+        warn(line)

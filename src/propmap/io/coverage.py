@@ -52,9 +52,13 @@ def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float,
 
 
 #: how far beyond a [coverage] table a run must go to be warned of: J by its printed 0.01, the rates by 1e-6 relative
-#: (a file's 6999.999999999999 rpm from rad/s), the airspeed by 1% and 0.1 m/s (airspeed_beyond)
+#: (a file's 6999.999999999999 rpm from rad/s), the airspeed by 1% and 0.1 m/s (airspeed_beyond), the incidence
+#: by INCIDENCE_SLACK_DEG
 J_SLACK = 0.005
 RATE_SLACK = 1e-6
+#: the incidence by 0.1 deg (a log's vertical descent at 180 deg beside training logs' 179.971 deg was warned of, the
+#: only line said, which told nothing: an audit of faster flights, 2026-12-02)
+INCIDENCE_SLACK_DEG = 0.1
 
 
 def airspeed_beyond(airspeed: float, airspeed_max: float) -> bool:
@@ -122,7 +126,7 @@ def coverage_warnings(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
     beyond_J = "J_max" in cov and J > cov["J_max"] + J_SLACK
     if beyond_J:
         out.append(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
-    beyond_incidence = "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"] + 1e-6
+    beyond_incidence = "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"] + INCIDENCE_SLACK_DEG
     if beyond_incidence:
         axial = cov["incidence_deg_max"] == 0
         descent = ("; beyond 90 deg the rotor descends, beyond the climb data: the momentum of rotors in descent, "
