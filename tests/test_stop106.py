@@ -226,3 +226,20 @@ def test_an_incidence_within_a_tenth_of_a_degree_of_the_datas_is_not_warned_of(t
     assert coverage_warnings(prop, str(p), air, 100.0, 0.0, 120.09) == []
     assert coverage_warnings(prop, str(p), air, 100.0, 0.0, 120.5) == [
         f"incidence up to 120.5 deg: {p} was fitted to data up to 120 deg"]
+
+
+def test_a_flight_fits_residuals_are_named_by_axis_log_and_time():
+    """fit flight's report listed its largest residuals as bare indices ('#11333 -12.1'): each is named by its axis,
+    log and time now, in the residual vector's order (the force errors sample by sample, then the moments')."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from propmap.identify.flight import _residual_labels
+
+    s = SimpleNamespace(log_names=("a.mat", "b.mat"), log_index=np.array([0, 0, 1]), t=np.array([0.0, 0.04, 1.5]))
+    labels = _residual_labels(s, moments=False)
+    assert labels[:4] == ["Fx, a.mat, t 0.00 s", "Fy, a.mat, t 0.00 s", "Fz, a.mat, t 0.00 s", "Fx, a.mat, t 0.04 s"]
+    assert labels[-1] == "Fz, b.mat, t 1.50 s" and len(labels) == 9
+    both = _residual_labels(s, moments=True)
+    assert both[:9] == labels and both[9] == "Mx / arm, a.mat, t 0.00 s" and len(both) == 18

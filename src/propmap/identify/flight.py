@@ -270,8 +270,18 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     # consecutive samples: samples left out (a stopped rotor, the ground) end a run (a review)
     result.extra["residual_autocorrelation"] = lag1_autocorrelation(
         result.residuals[:3 * samples.n].reshape(samples.n, 3), _consecutive_runs(samples))
+    result.extra["residual_labels"] = _residual_labels(samples, moments)
     _warn_at_optimum(result, model.make_residual, options)
     return result
+
+
+def _residual_labels(samples: FlightSamples, moments: bool) -> list[str]:
+    """Each flight-fit residual's axis, log and time (the force errors sample by sample, then the
+    moments' likewise), which the report shows beside the largest (bare indices, '#11333 -12.1',
+    named no sample: an audit of faster flights, 2026-12-02)."""
+    where = [f"{samples.log_names[k]}, t {t:.2f} s" for k, t in zip(samples.log_index, samples.t)]
+    labels = [f"F{a}, {w}" for w in where for a in "xyz"]
+    return labels + ([f"M{a} / arm, {w}" for w in where for a in "xyz"] if moments else [])
 
 
 def _check_flight_args(samples, vehicle, base, body, options) -> None:
