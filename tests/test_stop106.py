@@ -243,3 +243,78 @@ def test_a_flight_fits_residuals_are_named_by_axis_log_and_time():
     assert labels[-1] == "Fz, b.mat, t 1.50 s" and len(labels) == 9
     both = _residual_labels(s, moments=True)
     assert both[:9] == labels and both[9] == "Mx / arm, a.mat, t 0.00 s" and len(both) == 18
+
+
+# ---- PX4 ULog: an ESC's telemetry marked offline (io/ulog.py; a PX4 audit, 2026-12-02) -------------------------------
+def test_an_escs_offline_readings_are_left_out_not_read_as_a_stopped_motor(tmp_path):
+    """PX4's DShot driver zeroes an ESC's entry when its telemetry times out and clears its bit of esc_online_flags
+    (PX4's own ESC check reads bit k as esc[k] online): the zeros were read as a stopped motor and interpolated into
+    the samples around them (0-4050 rpm in a hover). Now they are left out with a warning, the speed interpolated
+    between the online readings; flags never set (0 throughout: not kept) leave every reading in."""
+    import math
+
+    import numpy as np
+
+    from propmap.io.flightlog import read_flight_log
+    from ulog_writer import write_ulog
+
+    hz, n = 100.0, 400
+    t = [1_000_000 + int(i * 1e6 / hz) for i in range(n)]
+    xyz = [("uint64_t", "timestamp"), ("float[3]", "xyz")]
+    topics = {
+        "vehicle_acceleration": (xyz, [(ti, 0.0, 0.0, -9.80665) for ti in t]),
+        "vehicle_angular_velocity": (xyz, [(ti, 0.0, 0.0, 0.0) for ti in t]),
+        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")], [(ti, 1.0, 0.0, 0.0, 0.0) for ti in t]),
+        "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
+                                   [(ti, 0.0, 0.0, 0.0) for ti in t])}
+    off = range(200, 205)  # (esc[1]'s telemetry lost for 5 messages: its rpm zeroed, its bit cleared)
+
+    def esc_rows(flags_kept):
+        return [(ti, 4, (0b1101 if i in off else 0b1111) if flags_kept else 0,
+                 *sum(([ti, 0 if (i in off and k == 1) else 5000] for k in range(4)), [])) for i, ti in enumerate(t)]
+
+    fields = [("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("uint8_t", "esc_online_flags"),
+              ("esc_report[4]", "esc")]
+    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")]}
+    topics["esc_status"] = (fields, esc_rows(True))
+    write_ulog(tmp_path / "f.ulg", topics, nested)
+    with pytest.warns(UserWarning, match=r"topic 'esc_status': 5 reading\(s\) of an ESC marked offline "
+                                         r"\(esc_online_flags; the most, 5, of esc\[1\]\) left out"):
+        log = read_flight_log(tmp_path / "f.ulg")
+    np.testing.assert_allclose(log.rotor_omega * 30 / math.pi, 5000.0, rtol=1e-9)
+    topics["esc_status"] = (fields, esc_rows(False))
+    write_ulog(tmp_path / "g.ulg", topics, nested)
+    rpm = read_flight_log(tmp_path / "g.ulg").rotor_omega[:, 1] * 30 / math.pi
+    assert rpm.min() == 0.0  # (no flags kept: the zeros are the log's, read as written)
+
+
+def test_uavcan_escs_are_ordered_by_their_output_functions(tmp_path):
+    """PX4's UAVCAN ESC driver fills esc[] by the ESC's index (UAVCAN output i+1) and names no actuator_function
+    (PX4-Autopilot src/drivers/uavcan/actuators/esc.cpp): with UAVCAN_EC_FUNC1..4 = Motor3, Motor1, Motor4, Motor2
+    the speeds were read in entry order, [5300, 5100, 5400, 5200] rpm for motors 1-4's [5100, ..., 5400]."""
+    import math
+
+    import numpy as np
+
+    from propmap.io.flightlog import read_flight_log
+    from ulog_writer import write_ulog
+
+    t = [1_000_000 + int(i * 1e4) for i in range(400)]
+    xyz = [("uint64_t", "timestamp"), ("float[3]", "xyz")]
+    fn = [103, 101, 104, 102]
+    topics = {
+        "vehicle_acceleration": (xyz, [(ti, 0.0, 0.0, -9.80665) for ti in t]),
+        "vehicle_angular_velocity": (xyz, [(ti, 0.0, 0.0, 0.0) for ti in t]),
+        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")], [(ti, 1.0, 0.0, 0.0, 0.0) for ti in t]),
+        "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
+                                   [(ti, 0.0, 0.0, 0.0) for ti in t]),
+        "esc_status": ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[4]", "esc")],
+                       [(ti, 4, *sum(([ti, 5000 + 100 * (fn[k] - 100)] for k in range(4)), [])) for ti in t])}
+    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")]}
+    write_ulog(tmp_path / "can.ulg", topics, nested, params={f"UAVCAN_EC_FUNC{k + 1}": fn[k] for k in range(4)})
+    log = read_flight_log(tmp_path / "can.ulg", n_motors=4)
+    np.testing.assert_allclose(log.rotor_omega[0] * 30 / math.pi, [5100, 5200, 5300, 5400], rtol=1e-12)
+    assert "by UAVCAN_EC_FUNCn (entries 1, 3, 0, 2" in log.motor_order
+    # (without the parameters: entry order, as before)
+    write_ulog(tmp_path / "plain.ulg", topics, nested)
+    assert "in entry order" in read_flight_log(tmp_path / "plain.ulg", n_motors=4).motor_order

@@ -324,13 +324,17 @@ def _resampled(t, acc, rates, attitude, velocity, motors, order) -> dict:
     def at(tt, a):
         return np.column_stack([np.interp(t, tt, a[:, k]) for k in range(a.shape[1])])
 
+    def motors_at(tt, a):  # (an ESC's offline readings, NaN, left out of its motor's interpolation)
+        return np.column_stack([np.interp(t, tt[ok], a[ok, k]) if (ok := ~np.isnan(a[:, k])).any() else
+                                np.interp(t, tt, a[:, k]) for k in range(a.shape[1])])
+
     q_i = at(tq, q)
     q_i /= np.linalg.norm(q_i, axis=1, keepdims=True)
     v_body = _rotate_ned_to_body(q_i, at(tv, vel)) * _FRD_TO_FLU
     w = at(tw, w_frd) * _FRD_TO_FLU
     # attitude as (x, y, z, w) of FLU body -> ENU-like z-up world: FRD->NED conjugated by the flips
     quat = np.column_stack([q_i[:, 1], -q_i[:, 2], -q_i[:, 3], q_i[:, 0]])
-    omega = at(tm, rpm) * RPM
+    omega = motors_at(tm, rpm) * RPM
     return dict(t=t - t[0], angular_velocity=w,
                 angular_acceleration=None if deriv is None else at(tw, deriv) * _FRD_TO_FLU,
                 specific_force=acc * _FRD_TO_FLU, velocity=v_body, attitude=quat, rotor_omega=omega,
@@ -365,18 +369,42 @@ MOTOR1_FUNCTION = 101
 MOTOR_FUNCTIONS = 12
 
 
-def _esc_motor_order(d, cols: list, name: str, n_motors: int | None, error: type[ValueError]):
+def _uavcan_motor_order(params: dict, cols: list, n_motors: int | None):
+    """(esc_rpm columns in motor order, description) by the log's ``UAVCAN_EC_FUNC<i>``, or None
+    where they do not assign motors 1..n to the entries: PX4's UAVCAN ESC driver fills esc[] by
+    the ESC's index, output i+1 of UAVCAN_EC_FUNC<i+1>, and names no actuator_function (its speeds
+    were read in entry order: [5300, 5100, 5400, 5200] rpm for [5100, ..., 5400], a PX4 audit,
+    2026-12-02; PX4-Autopilot src/drivers/uavcan/actuators/esc.cpp)."""
+    motors = {}
+    for k, v in params.items():
+        m = _FUNC_PARAMETER.fullmatch(k)
+        if m and m.group(1) == "UAVCAN_EC" and MOTOR1_FUNCTION <= int(v) < MOTOR1_FUNCTION + MOTOR_FUNCTIONS:
+            motors.setdefault(int(v) - MOTOR1_FUNCTION + 1, int(m.group(2)) - 1)
+    entry = {int(f[4:f.index("]")]): f for f in cols}
+    n = n_motors if n_motors is not None else (max(motors) if motors else 0)
+    if not n or any(motors.get(m) not in entry for m in range(1, n + 1)):
+        return None
+    return ([entry[motors[m]] for m in range(1, n + 1)],
+            f"PX4 esc_status esc_rpm of Motor1..Motor{n} by UAVCAN_EC_FUNCn (entries "
+            f"{', '.join(str(motors[m]) for m in range(1, n + 1))}; the UAVCAN driver names no actuator_function)")
+
+
+def _esc_motor_order(d, cols: list, name: str, n_motors: int | None, error: type[ValueError],
+                     params: dict | None = None):
     """(esc_rpm columns in motor order, description). PX4 numbers esc[] in its own output order
     and, since v1.14, names each entry's motor in esc[k].actuator_function (101 = Motor1): where it
     does, motor m is the entry whose function is 100 + m (read in entry order, a quadrotor whose
     outputs MAIN1-4 drive motors 4, 1, 2, 3 had its speeds read as [5400, 5100, 5200, 5300] rpm for
     [5100, ..., 5400]: a PX4 audit, 2026-11-27). Entry order where the field is absent or all 0;
-    a motor on two entries, or missing, or beyond ``n_motors``, is refused."""
+    a motor on two entries, or missing, or beyond ``n_motors``, is refused. Where no entry names a
+    motor, the log's ``UAVCAN_EC_FUNC<i>`` (``params``) order them, where they assign every motor
+    (:func:`_uavcan_motor_order`)."""
     channels = [int(f[4:f.index("]")]) for f in cols]
     fields = [f"esc[{k}].actuator_function" for k in channels]
     plain = f"PX4 esc_status esc[0..{len(cols) - 1}].esc_rpm in entry order (no actuator_function)"
+    uavcan = _uavcan_motor_order(params or {}, cols, n_motors) if cols else None
     if not cols or not all(f in d.data for f in fields):
-        return cols, plain
+        return uavcan or (cols, plain)
     codes = []
     for f in fields:  # each entry's function: its most frequent nonzero value (0 before the mixer assigns it)
         v = np.asarray(d.data[f]).astype(int)
@@ -384,7 +412,7 @@ def _esc_motor_order(d, cols: list, name: str, n_motors: int | None, error: type
         codes.append(int(np.bincount(v).argmax()) if v.size else 0)
     numbers = [c - MOTOR1_FUNCTION + 1 for c in codes if MOTOR1_FUNCTION <= c < MOTOR1_FUNCTION + MOTOR_FUNCTIONS]
     if not numbers:
-        return cols, plain
+        return uavcan or (cols, plain)
     if len(set(numbers)) < len(numbers):
         twice = next(m for m in numbers if numbers.count(m) > 1)
         raise error(f"{name}: esc_status' actuator_function assigns motor {twice} to two entries")
@@ -403,6 +431,28 @@ def _esc_motor_order(d, cols: list, name: str, n_motors: int | None, error: type
             f"{', '.join(str(channels[motors[m]]) for m in range(1, n + 1))})")
 
 
+def _offline_as_missing(d, cols: list, rpm: np.ndarray, name: str, said: list) -> np.ndarray:
+    """The esc_rpm columns ``cols`` of esc_status ``d`` (its messages' rows) with NaN where the
+    entry's bit of ``esc_online_flags`` is clear (PX4's own ESC check reads bit k as esc[k]
+    online): a telemetry dropout, whose zeroed rpm (PX4's DShot driver zeroes an offline entry)
+    was read as a stopped motor and interpolated into the samples around it (0 to 4050 rpm in a
+    hover: a PX4 audit, 2026-12-02). Flags that are 0 in every message are taken as not kept."""
+    if "esc_online_flags" not in d.data:
+        return rpm
+    flags = np.asarray(d.data["esc_online_flags"]).astype(np.int64)
+    if not flags.any():
+        return rpm
+    entries = [int(f[4:f.index("]")]) for f in cols]
+    offline = np.column_stack([(flags >> k) & 1 == 0 for k in entries])
+    if not offline.any():
+        return rpm
+    worst = int(np.argmax(offline.sum(axis=0)))
+    said.append(f"{name}: topic 'esc_status': {int(offline.sum())} reading(s) of an ESC marked offline "
+                f"(esc_online_flags; the most, {int(offline[:, worst].sum())}, of esc[{entries[worst]}]) left out: "
+                "that motor's speed is interpolated between its online readings")
+    return np.where(offline, np.nan, rpm)
+
+
 def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[ValueError], said: list):
     """(t, rpm columns, description, topic) of the motor speeds (actuator_outputs: the first ``n_motors``)."""
     if _has(ulog, "esc_status") and motor_map is None:
@@ -411,11 +461,12 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
                       key=lambda f: int(f[4:f.index("]")]))
         count = int(np.max(d.data["esc_count"])) if "esc_count" in d.data else len(cols)
         cols = cols[:count]
-        cols, order = _esc_motor_order(d, cols, name, n_motors, error)
+        cols, order = _esc_motor_order(d, cols, name, n_motors, error, dict(ulog.initial_parameters))
         if cols:
             t, rpm = _topic(ulog, "esc_status", cols, name, error)
-            if np.any(np.abs(rpm) > 0):
-                return t, np.abs(rpm), order, "esc_status"
+            rpm = _offline_as_missing(d, cols, np.abs(rpm), name, said)
+            if np.any(rpm > 0):
+                return t, rpm, order, "esc_status"
         raise error(f"{name}: topic 'esc_status' carries no motor rpm (esc_rpm all zero or absent); give "
                     "the mapping rpm = a + b * output of actuator_outputs (--motor-map a,b)")
     if motor_map is None:
