@@ -246,6 +246,18 @@ def test_a_flight_fits_residuals_are_named_by_axis_log_and_time():
 
 
 # ---- PX4 ULog: an ESC's telemetry marked offline (io/ulog.py; a PX4 audit, 2026-12-02) -------------------------------
+def _px4_hover(n=400, hz=100.0):
+    """(timestamps [us], the four topics besides the motors) of a PX4 log hovering level at rest."""
+    t = [1_000_000 + int(i * 1e6 / hz) for i in range(n)]
+    xyz = [("uint64_t", "timestamp"), ("float[3]", "xyz")]
+    return t, {
+        "vehicle_acceleration": (xyz, [(ti, 0.0, 0.0, -9.80665) for ti in t]),
+        "vehicle_angular_velocity": (xyz, [(ti, 0.0, 0.0, 0.0) for ti in t]),
+        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")], [(ti, 1.0, 0.0, 0.0, 0.0) for ti in t]),
+        "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
+                                   [(ti, 0.0, 0.0, 0.0) for ti in t])}
+
+
 def test_an_escs_offline_readings_are_left_out_not_read_as_a_stopped_motor(tmp_path):
     """PX4's DShot driver zeroes an ESC's entry when its telemetry times out and clears its bit of esc_online_flags
     (PX4's own ESC check reads bit k as esc[k] online): the zeros were read as a stopped motor and interpolated into
@@ -258,15 +270,7 @@ def test_an_escs_offline_readings_are_left_out_not_read_as_a_stopped_motor(tmp_p
     from propmap.io.flightlog import read_flight_log
     from ulog_writer import write_ulog
 
-    hz, n = 100.0, 400
-    t = [1_000_000 + int(i * 1e6 / hz) for i in range(n)]
-    xyz = [("uint64_t", "timestamp"), ("float[3]", "xyz")]
-    topics = {
-        "vehicle_acceleration": (xyz, [(ti, 0.0, 0.0, -9.80665) for ti in t]),
-        "vehicle_angular_velocity": (xyz, [(ti, 0.0, 0.0, 0.0) for ti in t]),
-        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")], [(ti, 1.0, 0.0, 0.0, 0.0) for ti in t]),
-        "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
-                                   [(ti, 0.0, 0.0, 0.0) for ti in t])}
+    t, topics = _px4_hover()
     off = range(200, 205)  # (esc[1]'s telemetry lost for 5 messages: its rpm zeroed, its bit cleared)
 
     def esc_rows(flags_kept):
@@ -299,17 +303,10 @@ def test_uavcan_escs_are_ordered_by_their_output_functions(tmp_path):
     from propmap.io.flightlog import read_flight_log
     from ulog_writer import write_ulog
 
-    t = [1_000_000 + int(i * 1e4) for i in range(400)]
-    xyz = [("uint64_t", "timestamp"), ("float[3]", "xyz")]
+    t, topics = _px4_hover()
     fn = [103, 101, 104, 102]
-    topics = {
-        "vehicle_acceleration": (xyz, [(ti, 0.0, 0.0, -9.80665) for ti in t]),
-        "vehicle_angular_velocity": (xyz, [(ti, 0.0, 0.0, 0.0) for ti in t]),
-        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")], [(ti, 1.0, 0.0, 0.0, 0.0) for ti in t]),
-        "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
-                                   [(ti, 0.0, 0.0, 0.0) for ti in t]),
-        "esc_status": ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[4]", "esc")],
-                       [(ti, 4, *sum(([ti, 5000 + 100 * (fn[k] - 100)] for k in range(4)), [])) for ti in t])}
+    topics["esc_status"] = ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[4]", "esc")],
+                            [(ti, 4, *sum(([ti, 5000 + 100 * (fn[k] - 100)] for k in range(4)), [])) for ti in t])
     nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")]}
     write_ulog(tmp_path / "can.ulg", topics, nested, params={f"UAVCAN_EC_FUNC{k + 1}": fn[k] for k in range(4)})
     log = read_flight_log(tmp_path / "can.ulg", n_motors=4)
@@ -318,3 +315,36 @@ def test_uavcan_escs_are_ordered_by_their_output_functions(tmp_path):
     # (without the parameters: entry order, as before)
     write_ulog(tmp_path / "plain.ulg", topics, nested)
     assert "in entry order" in read_flight_log(tmp_path / "plain.ulg", n_motors=4).motor_order
+
+
+def test_a_vehicle_file_out_of_the_px4_logs_motor_order_is_warned_of(tmp_path, capsys):
+    """A PX4 log carries its vehicle's geometry (CA_ROTORn_PX, _PY, _KM; PX4's x500: motor 1 front-right ccw, 2
+    back-left ccw, 3 front-left cw, 4 back-right cw): the example quadrotor's file (front-left ccw first) was read
+    without a word on such a log, its moments those of other rotors. A file in the log's order reads silently."""
+    from pathlib import Path
+
+    import propmap as pm
+    from ulog_writer import write_ulog
+
+    t, topics = _px4_hover()
+    topics["esc_status"] = ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[4]", "esc")],
+                            [(ti, 4, *sum(([ti, 5400] for _ in range(4)), [])) for ti in t])
+    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")]}
+    layout = [(0.13, 0.22, 0.05), (-0.13, -0.2, 0.05), (0.13, -0.22, -0.05), (-0.13, 0.2, -0.05)]  # (PX4's x500)
+    params = {f"CA_ROTOR{i}_{k}": v for i, row in enumerate(layout) for k, v in zip(("PX", "PY", "KM"), row)}
+    write_ulog(tmp_path / "x.ulg", topics, nested, params=params)
+    assert main(["wrench", str(tmp_path / "x.ulg"), "--vehicle", "quadrotor", "--out", str(tmp_path / "w.csv")]) == 0
+    err = capsys.readouterr().err
+    assert ("propmap: warning: x.ulg: the log's own geometry (PX4's CA_ROTORn_PX, _PY, _KM) has motors 1..4 "
+            "front-right ccw, back-left ccw, front-left cw, back-right cw; the vehicle file's rotor 1 is front-left "
+            "ccw (4 rotors differ): list the vehicle's rotors in the log's motor order") in err, err
+    example = (Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml").read_text()
+    head, *rotors = example.split("[[rotors]]")
+    spins = {"front-left": "cw", "front-right": "ccw", "back-right": "cw", "back-left": "ccw"}
+    by = {next(w for w in spins if w in r.splitlines()[0]): r for r in rotors}
+    ordered = head + "".join("[[rotors]]" + by[w].replace('"ccw"', f'"{spins[w]}"').replace('"cw"', f'"{spins[w]}"')
+                             for w in ("front-right", "back-left", "front-left", "back-right"))
+    (tmp_path / "px4.toml").write_text(ordered)
+    assert main(["wrench", str(tmp_path / "x.ulg"), "--vehicle", str(tmp_path / "px4.toml"), "--out",
+                 str(tmp_path / "w2.csv")]) == 0
+    assert "the log's own geometry" not in capsys.readouterr().err

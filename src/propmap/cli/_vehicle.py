@@ -5,6 +5,7 @@ and their coverage."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import click
@@ -157,3 +158,44 @@ def _descent_state_warning(loads, what: str, keep=None) -> list[str]:
     return [f"{int(hit.sum())} of {hit.size} samples of {what} ({100 * hit.mean():.1f}%) have a rotor in the "
             "vortex-ring or turbulent-wake state (descending into its own wake), where momentum theory is not "
             "predictive and the model's thrust is least certain (docs/flight.md: Where it is still wrong)"]
+
+
+def _direction(x: float, y: float) -> str:
+    """'front-right', 'left', ... of a hub at (x forward, y left) from the centre."""
+    names = ("front", "front-left", "left", "back-left", "back", "back-right", "right", "front-right")
+    return names[int(round(math.degrees(math.atan2(y, x)) / 45.0)) % 8]
+
+
+def _layout_warnings(logs, veh) -> list[str]:
+    """A warning per log whose own vehicle geometry (:attr:`FlightLog.rotor_layout`, a PX4 log's
+    control allocation) puts a motor elsewhere (more than 30 deg round the centre) or spinning
+    the other way than the vehicle file's rotor of that number: the moments would be of other
+    rotors (a PX4 audit, 2026-12-02: the example quadrotor's order, front-left first, on a PX4
+    quad X, whose motor 1 is front-right, gave 9 times the moment error, the forces unchanged)."""
+    import numpy as np
+
+    out = []
+    cg = np.asarray(veh.centre_of_mass, float)[:2]
+    for log in logs:
+        lay = getattr(log, "rotor_layout", None)
+        if lay is None or len(lay) != len(veh.rotors):
+            continue
+        bad = []
+        for k, (r, (px, py, spin)) in enumerate(zip(veh.rotors, lay)):
+            x, y = np.asarray(r.position, float)[:2] - cg
+            turn = abs((math.degrees(math.atan2(y, x) - math.atan2(py, px)) + 180.0) % 360.0 - 180.0)
+            own = r.spin * np.sign(r.axis[2]) if abs(r.axis[2]) > 0.9 else spin  # (a tilted rotor: spin unchecked)
+            if turn > 30.0 or own != spin:
+                bad.append(k)
+        if bad:
+            def said(x, y, s):
+                return f"{_direction(x, y)} {'ccw' if s > 0 else 'cw'}"
+
+            k = bad[0]
+            mine = np.asarray(veh.rotors[k].position, float)[:2] - cg
+            out.append(f"{log.name}: the log's own geometry (PX4's CA_ROTORn_PX, _PY, _KM) has motors 1..{len(lay)} "
+                       f"{', '.join(said(*row) for row in lay)}; the vehicle file's rotor {k + 1} is "
+                       f"{said(mine[0], mine[1], veh.rotors[k].spin * np.sign(veh.rotors[k].axis[2]))}"
+                       + (f" ({len(bad)} rotors differ)" if len(bad) > 1 else "") + ": list the vehicle's rotors in "
+                       "the log's motor order, or its moments are of other rotors")
+    return out

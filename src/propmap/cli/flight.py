@@ -15,7 +15,8 @@ from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond, j_max
 from ._flight_report import (NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table,
                              band_line)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
-from ._vehicle import _check_rotor_sets, _descent_state_warning, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
+from ._vehicle import (_check_rotor_sets, _descent_state_warning, _layout_warnings, _one_set, _rotor_coverage,
+                       _vehicle, _vehicle_sets)
 from .fit import _options, _out_files, _run_fit, _vehicle_propeller, _write_outputs, with_fit_options
 
 
@@ -213,6 +214,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     held = _held_logs(holdout, names, cross_validate)
     logs = _logs(log_paths, _motor_map(motor_map), len(veh.rotors))  # (the names' checks before the reads)
     _refuse_same_flight(logs)
+    for line in _layout_warnings(logs, veh):
+        warn(line)
     samples = _samples(logs, veh, rate_hz)
     log_rate = min(lg.rate_hz for lg in logs)
     if rate_hz > 1.01 * log_rate:  # (flight_samples takes every k-th sample, k = round(log rate / rate) >= 1)
@@ -512,6 +515,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     veh, params, air, label, sets = _vehicle_sets(vehicle, params_spec, air_choice)
     body = veh.body_drag
     (log,) = _logs([log_path], _motor_map(motor_map), len(veh.rotors))
+    for line in _layout_warnings([log], veh):
+        warn(line)
     samples = _samples([log], veh, 1e4)  # every sample
     from ..vehicle import vehicle_wrench
 

@@ -97,6 +97,11 @@ class FlightLog:
         1.4e-6 N): the least-squares m in prediction + residual = m a_s. None otherwise.
     motor_order : str
         What the motor columns are.
+    rotor_layout : ndarray, shape (n_motors, 3), or None
+        Each motor's hub position, x forward and y left [m], and spin (+1 counter-clockwise
+        seen from above, -1 clockwise), as the log's own vehicle geometry gives them (a PX4
+        log's control allocation, ``CA_ROTOR<i>_PX``, ``_PY``, ``_KM``); None where the log
+        gives none.
     """
 
     name: str
@@ -114,6 +119,7 @@ class FlightLog:
     reference_moment: np.ndarray | None = None
     reference_mass: float | None = None
     motor_order: str = ""
+    rotor_layout: np.ndarray | None = None
 
     @property
     def n(self) -> int:

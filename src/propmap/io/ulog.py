@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import builtins
 import io
+import math
 import re
 import threading
 
@@ -272,7 +273,21 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     if keep.sum() < min_samples:
         raise error(f"{name}: the topics overlap on {keep.sum()} sample(s) of {acc_topic}; need at least "
                     f"{min_samples}")
-    return _resampled(t[keep], acc[keep], (tw, rates, deriv), (tq, q), (tv, vel), (tm, rpm), order), said
+    fields = _resampled(t[keep], acc[keep], (tw, rates, deriv), (tq, q), (tv, vel), (tm, rpm), order)
+    return {**fields, "rotor_layout": _px4_rotor_layout(dict(ulog.initial_parameters), rpm.shape[1])}, said
+
+
+def _px4_rotor_layout(params: dict, n: int) -> np.ndarray | None:
+    """(n, 3): motor i+1's hub position x forward, y left [m] and spin (+1 counter-clockwise seen
+    from above, -1 clockwise) from the log's control allocation ``CA_ROTOR<i>_PX``, ``_PY``,
+    ``_KM`` (PX4's FRD body axes, y to the right; a moment coefficient KM > 0 for a
+    counter-clockwise rotor: PX4's x500 airframe, motor 1 front-right at KM = +0.05), or None
+    where a motor's are missing (PX4 before control allocation) or a KM is 0."""
+    keys = [(f"CA_ROTOR{i}_PX", f"CA_ROTOR{i}_PY", f"CA_ROTOR{i}_KM") for i in range(n)]
+    if not n or any(k not in params for row in keys for k in row) or any(params[k[2]] == 0 for k in keys):
+        return None
+    return np.array([[float(params[px]), -float(params[py]), math.copysign(1.0, float(params[km]))]
+                     for px, py, km in keys])
 
 
 def _parsed(raw: bytes, name: str, error):
