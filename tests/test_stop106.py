@@ -348,3 +348,29 @@ def test_a_vehicle_file_out_of_the_px4_logs_motor_order_is_warned_of(tmp_path, c
     assert main(["wrench", str(tmp_path / "x.ulg"), "--vehicle", str(tmp_path / "px4.toml"), "--out",
                  str(tmp_path / "w2.csv")]) == 0
     assert "the log's own geometry" not in capsys.readouterr().err
+
+
+def test_a_px4_logs_slow_vehicle_acceleration_beside_a_fast_sensor_combined_is_said(tmp_path):
+    """PX4's default logging profile records vehicle_acceleration, whose messages are the samples, at 20 Hz beside a
+    250 Hz sensor_combined: 157 samples of 1951 were taken without a word. Guard: both at one rate, nothing said."""
+    import warnings
+
+    from propmap.io.flightlog import read_flight_log
+    from ulog_writer import write_ulog
+
+    t, topics = _px4_hover(n=800, hz=250.0)
+    topics["sensor_combined"] = ([("uint64_t", "timestamp"), ("float[3]", "accelerometer_m_s2")],
+                                 [(ti, 0.0, 0.0, -9.80665) for ti in t])
+    fields, rows = topics["vehicle_acceleration"]
+    topics["esc_status"] = ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[4]", "esc")],
+                            [(ti, 4, *sum(([ti, 5400] for _ in range(4)), [])) for ti in t])
+    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")]}
+    write_ulog(tmp_path / "same.ulg", topics, nested)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert read_flight_log(tmp_path / "same.ulg").n == 800
+    topics["vehicle_acceleration"] = (fields, rows[::12])  # (20.8 Hz)
+    write_ulog(tmp_path / "slow.ulg", topics, nested)
+    with pytest.warns(UserWarning, match=r"the samples are vehicle_acceleration's messages, logged at 20.8 Hz \(PX4's "
+                                         r"default logging profile; sensor_combined, at 250 Hz, is not corrected"):
+        assert read_flight_log(tmp_path / "slow.ulg").n == 67

@@ -232,6 +232,7 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
         "accelerometer_m_s2[0]", "accelerometer_m_s2[1]", "accelerometer_m_s2[2]"]
     t, acc = _topic(ulog, acc_topic, acc_fields, name, error)
     t, acc = _in_time_order(acc_topic, name, said, t, acc)  # (as every topic: it was refused, the others filtered)
+    _slow_accelerations(ulog, acc_topic, t, name, said)
     tw, rates = _topic(ulog, "vehicle_angular_velocity", ["xyz[0]", "xyz[1]", "xyz[2]"], name, error)
     deriv = None
     d = [s for s in ulog.data_list if s.name == "vehicle_angular_velocity"]
@@ -288,6 +289,29 @@ def _px4_rotor_layout(params: dict, n: int) -> np.ndarray | None:
         return None
     return np.array([[float(params[px]), -float(params[py]), math.copysign(1.0, float(params[km]))]
                      for px, py, km in keys])
+
+
+#: the samples are the accelerations' messages: logged more slowly than this [Hz] beside a faster sensor_combined, said
+SLOW_ACCELERATION_HZ = 50.0
+
+
+def _slow_accelerations(ulog, acc_topic: str, t: np.ndarray, name: str, said: list) -> None:
+    """Say in ``said`` where vehicle_acceleration, whose messages are the samples, is logged below
+    SLOW_ACCELERATION_HZ while sensor_combined is logged faster: PX4's default logging profile
+    records it at 20 Hz (src/modules/logger/logged_topics.cpp), and a log of 1951 sensor_combined
+    messages gave 157 samples without a word (a PX4 audit, 2026-12-02). sensor_combined's
+    accelerometer is not corrected for the estimator's bias, so it is not read instead."""
+    if acc_topic != "vehicle_acceleration" or t.size < 2 or not _has(ulog, "sensor_combined"):
+        return
+    rate = 1.0 / float(np.median(np.diff(t)))
+    d = min((s for s in ulog.data_list if s.name == "sensor_combined"), key=lambda s: s.multi_id)
+    ts = np.asarray(d.data["timestamp"], float) * 1e-6
+    other = 1.0 / float(np.median(np.diff(ts))) if ts.size > 1 and np.median(np.diff(ts)) > 0 else 0.0
+    if rate < SLOW_ACCELERATION_HZ and other > 2.0 * rate:
+        said.append(f"{name}: the samples are vehicle_acceleration's messages, logged at {rate:.3g} Hz (PX4's default "
+                    f"logging profile; sensor_combined, at {other:.3g} Hz, is not corrected for the estimator's "
+                    "accelerometer bias and is not read): log vehicle_acceleration faster for more samples "
+                    "(PX4's etc/logging/logger_topics.txt on the SD card sets a topic's interval)")
 
 
 def _parsed(raw: bytes, name: str, error):
