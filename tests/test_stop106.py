@@ -374,3 +374,59 @@ def test_a_px4_logs_slow_vehicle_acceleration_beside_a_fast_sensor_combined_is_s
     with pytest.warns(UserWarning, match=r"the samples are vehicle_acceleration's messages, logged at 20.8 Hz \(PX4's "
                                          r"default logging profile; sensor_combined, at 250 Hz, is not corrected"):
         assert read_flight_log(tmp_path / "slow.ulg").n == 67
+
+
+# ---- APC PE0 files of later vintages (io/pe0.py; a geometry audit, 2026-12-02) -------------------------------------
+def _pe0_lines():
+    from propmap.io.catalogue import _data_path
+
+    src = next(_data_path("apc_pe0").glob("8x6E*.PE0"))
+    return src.name, src.read_text(errors="replace").splitlines()
+
+
+def test_a_pe0_table_with_a_fourteenth_column_is_read_by_its_header(tmp_path):
+    """APC's later PE0 files add a rake column before TWIST (14 values a row, TWIST the 9th, as a public converter of
+    APC's 2026-02 archive reads them): such a file was refused as 'a value split by a blank'. A column of zeros named
+    RAKE(Z) added to the catalogue's 8x6E file gives the same propeller."""
+    import numpy as np
+
+    import propmap as pm
+
+    name, lines = _pe0_lines()
+    head = next(i for i, ln in enumerate(lines) if "STATION" in ln.split() and "TWIST" in ln.split())
+    out = []
+    for i, ln in enumerate(lines):
+        parts = ln.split()
+        if i == head:
+            parts.insert(parts.index("THICKNESS"), "RAKE(Z)")
+            ln = "  ".join(parts)
+        elif i > head and len(parts) == 13 and parts[0][0].isdigit():
+            ln = "  ".join([*parts[:6], "0.0000", *parts[6:]])
+        out.append(ln)
+    path = tmp_path / name
+    path.write_text("\n".join(out) + "\n")
+    mine, theirs = pm.read_geometry(path), pm.load_propeller("apce_8x6")
+    np.testing.assert_allclose(mine.theta, theirs.theta, rtol=1e-12)
+    np.testing.assert_allclose(mine.chord, theirs.chord, rtol=1e-12)
+
+
+def test_pe0_stations_inside_the_hub_transition_are_left_out(tmp_path):
+    """APC's later files tabulate the hub fairing inside HUBTRA (TWIST from 0 deg), which its v2022 files start at:
+    read as blade it moved a 5x3.75 propeller's static thrust by +0.9% and its CT at J = 0.6 by -3.6%. Two stations
+    put inside the catalogue's 8x6E file's HUBTRA are left out with a warning; the propeller is the catalogue's."""
+    import numpy as np
+
+    import propmap as pm
+
+    name, lines = _pe0_lines()
+    first = next(i for i, ln in enumerate(lines) if len(ln.split()) == 13 and ln.split()[0][0].isdigit())
+    hub = []
+    for station, twist in ((0.30, 0.0), (0.60, 30.0)):
+        parts = lines[first].split()
+        parts[0], parts[7] = f"{station:.4f}", f"{twist:.4f}"
+        hub.append("  ".join(parts))
+    path = tmp_path / name
+    path.write_text("\n".join([*lines[:first], *hub, *lines[first:]]) + "\n")
+    with pytest.warns(UserWarning, match=r"2 station\(s\) inside HUBTRA, the hub's transition at [\d.]+ in, left out"):
+        mine = pm.read_geometry(path)
+    np.testing.assert_allclose(mine.r, pm.load_propeller("apce_8x6").r, rtol=1e-12)

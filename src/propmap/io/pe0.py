@@ -1,4 +1,5 @@
-"""Reader of APC Propellers PE0 geometry files (APC "Technical Information", v2022-0915):
+"""Reader of APC Propellers PE0 geometry files (APC "Technical Information", v2022-0915, and
+later files with a rake column and hub stations inside HUBTRA):
 :func:`read_apc_pe0`, which :func:`propmap.io.read_geometry` chooses for a file with a
 STATION ... TWIST table.
 
@@ -12,6 +13,7 @@ from __future__ import annotations
 import io
 import math
 import re
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -30,8 +32,10 @@ _PE0_MAX_BLADES = 100
 def read_apc_pe0(path, *, name: str | None = None, source: str = "") -> Propeller:
     """Read an APC PE0 geometry file (STATION [in], CHORD [in], ..., TWIST [deg]).
 
-    The blade angle is APC's TWIST column (LE-TE datum); RADIUS and BLADES come from
-    the file's summary lines.
+    The blade angle is APC's TWIST column (LE-TE datum), found by the table's header (one
+    word a column: 13 in v2022 files, 14 with a later file's rake column); RADIUS and BLADES
+    come from the file's summary lines. Stations inside HUBTRA (the hub's transition, where
+    later files tabulate the hub fairing) are left out, with a UserWarning.
 
     Parameters
     ----------
@@ -63,11 +67,14 @@ def _is_pe0(text: str) -> bool:
     return "STATION" in head and "TWIST" in head
 
 
-#: the columns of a PE0 station row (STATION, CHORD, ..., TWIST)
+#: the columns of a PE0 station row (STATION, CHORD, ..., TWIST) in APC's v2022 files; a table whose header names
+#: more, one word each (APC's later files add a rake column: 14 values a row, TWIST the 9th), is read by its header
 PE0_COLUMNS = 13
+#: the most columns a station table's header may name
+_PE0_MAX_COLUMNS = 20
 
 
-def _pe0_table_continues(lines, end: int, where: str) -> None:
+def _pe0_table_continues(lines, end: int, where: str, ncol: int = PE0_COLUMNS) -> None:
     """Refuse a station table that a damaged row (blank, short, decimal commas) cut short: a
     station row of PE0_COLUMNS numbers after the line ``end`` that ended it, before the file's next
     header-like line (an input fuzzing audit, 2026-11-27: the rows after a blank line near the
@@ -80,7 +87,7 @@ def _pe0_table_continues(lines, end: int, where: str) -> None:
             vals = [parse_number(x) for x in parts]
         except ValueError:
             continue
-        if len(vals) >= PE0_COLUMNS:
+        if len(vals) >= ncol:
             raise GeometryFileError(f"{where}, line {end}: the station table breaks off here (a blank, short or "
                                     f"malformed row) and goes on at line {k}: repair line {end}")
 
@@ -92,18 +99,22 @@ def _pe0_summary(text: str, key: str, where: str) -> tuple[str, int]:
     return m.group(1), _line_of(text, m.start())
 
 
-def _pe0_table(lines, where: str) -> tuple[list, list, int | None]:
-    """The station table of a PE0 file's ``lines``: its rows (PE0_COLUMNS numbers each), the line
-    number of each and the line that ended the table (None at the end of the file); refuses a
-    non-numeric or non-finite value in a station row, naming its line and column, and a file
-    without the table."""
+def _pe0_table(lines, where: str) -> tuple[list, list, int | None, list]:
+    """The station table of a PE0 file's ``lines``: its rows (as many numbers each as its header
+    names columns, one word each: PE0_COLUMNS in APC's v2022 files, 14 in later ones with a rake
+    column), the line number of each, the line that ended the table (None at the end of the file)
+    and the header's words; refuses a non-numeric or non-finite value in a station row, naming
+    its line and column, and a file without the table."""
     rows, row_lines, header = [], [], []
     in_table = False
     end = None  # the line that ended the station table
+    ncol = PE0_COLUMNS
     for k, ln in enumerate(lines, start=1):
         parts = ln.split()
         if "STATION" in parts and "TWIST" in parts:
             in_table, header = True, parts
+            # (a later file's 14 columns were refused as 'a value split by a blank': a geometry audit, 2026-12-02)
+            ncol = len(parts) if PE0_COLUMNS <= len(parts) <= _PE0_MAX_COLUMNS else PE0_COLUMNS
             continue
         if not in_table:
             continue
@@ -116,17 +127,17 @@ def _pe0_table(lines, where: str) -> tuple[list, list, int | None]:
                 bad = x
                 break
         if bad is not None:
-            if len(parts) >= PE0_COLUMNS and vals:  # a station row (it starts with a number) with a bad value
+            if len(parts) >= ncol and vals:  # a station row (it starts with a number) with a bad value
                 raise GeometryFileError(f"{where}, line {k}: non-numeric value {_clip(bad, 40)} in the station table")
             if rows:
                 end = k
                 break
             continue  # the units line under the header
-        if len(vals) > PE0_COLUMNS:  # (a value split by a blank shifted TWIST to the thickness ratio without a word:
+        if len(vals) > ncol:  # (a value split by a blank shifted TWIST to the thickness ratio without a word:
             # a file audit, 2026-12-01; every PE0 file of the catalogue and ../shared has 13 values a row)
-            raise GeometryFileError(f"{where}, line {k}: {len(vals)} values where the station table has "
-                                    f"{PE0_COLUMNS} (a value split by a blank?)")
-        if len(vals) == PE0_COLUMNS:
+            raise GeometryFileError(f"{where}, line {k}: {len(vals)} values where the station table's header names "
+                                    f"{ncol} columns (a value split by a blank?)")
+        if len(vals) == ncol:
             for j, v in enumerate(vals):
                 if not math.isfinite(v):
                     col = header[j][:20] if j < len(header) else "?"
@@ -139,7 +150,7 @@ def _pe0_table(lines, where: str) -> tuple[list, list, int | None]:
             break
     if not rows:
         raise GeometryFileError(f"{where}: no STATION/CHORD/.../TWIST table found")
-    return rows, row_lines, end
+    return rows, row_lines, end, header if len(header) == ncol else []
 
 
 def _pe0_radius_blades(text: str, where: str) -> tuple[float, str, int]:
@@ -160,15 +171,36 @@ def _pe0_radius_blades(text: str, where: str) -> tuple[float, str, int]:
     return radius_in, r_raw, int(b_raw)
 
 
+def _outside_hub(data: np.ndarray, row_lines: list, text: str, where: str) -> tuple[np.ndarray, list]:
+    """The station rows from the file's HUBTRA (the hub's transition [in]) out, the others left out
+    with a warning: APC's later files (v2025) tabulate the hub fairing inside it (TWIST from 0 deg
+    at 0.05 R), where its v2022 files start at HUBTRA; read as blade, it moved a 5x3.75 propeller's
+    static thrust by +0.9% and its CT at J = 0.6 by -3.6% (a geometry audit, 2026-12-02). Without a
+    HUBTRA line, or with fewer than 2 stations from it, every row is kept."""
+    m = re.search(r"HUBTRA:[ \t]*(\S+)", text)
+    try:
+        hubtra = parse_number(m.group(1)) if m else math.nan
+    except ValueError:
+        return data, row_lines
+    inside = data[:, 0] < hubtra * (1 - 1e-9)
+    if not (math.isfinite(hubtra) and inside.any() and np.count_nonzero(~inside) >= 2):
+        return data, row_lines
+    warnings.warn(f"{where}: {int(inside.sum())} station(s) inside HUBTRA, the hub's transition at {hubtra:g} in, left "
+                  "out (the hub fairing's, not the blade's: the file's first station is "
+                  f"{data[0, 0]:g} in)", UserWarning, stacklevel=4)
+    return data[~inside], [ln for ln, i in zip(row_lines, inside) if not i]
+
+
 def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
     where = show_path(path)
     lines = io.StringIO(text, newline=None).readlines()
-    rows, row_lines, end = _pe0_table(lines, where)
+    rows, row_lines, end, header = _pe0_table(lines, where)
     if end is not None:
-        _pe0_table_continues(lines, end, where)
+        _pe0_table_continues(lines, end, where, len(rows[0]))
     radius_in, r_raw, n_blades = _pe0_radius_blades(text, where)
     data = np.array(rows)
-    twist = data[:, 7]
+    data, row_lines = _outside_hub(data, row_lines, text, where)
+    twist = data[:, header.index("TWIST") if header else 7]
     if np.any(np.abs(twist) > 90):
         i = int(np.argmax(np.abs(twist) > 90))
         raise GeometryFileError(f"{where}, line {row_lines[i]}: TWIST = {twist[i]:g} deg is outside [-90, 90] deg")
