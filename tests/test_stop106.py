@@ -430,3 +430,30 @@ def test_pe0_stations_inside_the_hub_transition_are_left_out(tmp_path):
     with pytest.warns(UserWarning, match=r"2 station\(s\) inside HUBTRA, the hub's transition at [\d.]+ in, left out"):
         mine = pm.read_geometry(path)
     np.testing.assert_allclose(mine.r, pm.load_propeller("apce_8x6").r, rtol=1e-12)
+
+
+# ---- a blade count in a third size figure (io/geometry_files.py, cli/_sources.py; a geometry audit, 2026-12-02) ------
+def _hqprop_files(tmp_path):
+    """HQProp's naming of a 3-blade 5.1 x 3.7 in propeller: a UIUC-format geometry (the catalogue's DA4022 5 in blade's
+    table) and a static run beside it."""
+    from propmap.io.catalogue import _data_path
+
+    geom = next(_data_path("uiuc_v2").glob("da4022_5x3.75_geom.txt")).read_text()
+    (tmp_path / "hqprop_5.1x3.7x3_geom.txt").write_text(geom)
+    (tmp_path / "hqprop_5.1x3.7x3_static_0001.txt").write_text(
+        "RPM         CT          CP\n" + "".join(f"{n}   {0.15 + 1e-6 * n:.4f}   0.0900\n"
+                                                 for n in (6000, 8000, 10000)))
+    return tmp_path / "hqprop_5.1x3.7x3_geom.txt", tmp_path / "hqprop_5.1x3.7x3_static_0001.txt"
+
+
+def test_a_third_size_figure_gives_the_blade_count(tmp_path, capsys):
+    """'hqprop_5.1x3.7x3': loads refused the geometry for want of a blade count its name gives, and validate took 2
+    blades from the data file's name while warning that the name says 3 (a thrust error of 22% for 10%)."""
+    geom, static = _hqprop_files(tmp_path)
+    assert main(["loads", str(geom), "--rpm", "6000", "--json"]) == 0
+    out = capsys.readouterr()
+    assert '"n_blades": 3' in out.out and "3 blades, from the file name" in out.err
+    assert main(["validate", str(static), "--prop", str(geom)]) == 0
+    err = capsys.readouterr().err
+    assert "3 blades, from the UIUC data files' name (hqprop_5.1x3.7x3_static_0001.txt: its third size figure)" in err
+    assert "not the 3 of the file name" not in err

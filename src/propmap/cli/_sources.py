@@ -299,7 +299,7 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, uiuc_g
         ``..._3b_...``): a fit or a comparison is of one count.
     """
     from ..io.catalogue import catalogue
-    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, size_from_name, size_in_inches_from_name
+    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, name_blade_count, size_from_name, size_in_inches_from_name
 
     if not uiuc_geometry or (prop_choice.blades is not None and prop_choice.diameter_in is not None):
         return prop_choice
@@ -325,9 +325,11 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, uiuc_g
     shown = _short(Path(sources[0]).name)
     if blades is None:
         entry = catalogue().get(named)
-        blades = entry.n_blades if entry is not None else hub if hub else 2
+        # (HQProp's 'hqprop_5.1x3.7x3': 2 blades were said, and warned of as not the name's 3, a geometry audit)
+        third = name_blade_count(named) if entry is None and not hub else None
+        blades = entry.n_blades if entry is not None else hub if hub else third or 2
         why = ("the catalogue's count for it" if entry is not None else "its hub suffix" if hub else
-               "UIUC's names mark only the 3- and 4-blade hubs, _3b and _4b")
+               "its third size figure" if third else "UIUC's names mark only the 3- and 4-blade hubs, _3b and _4b")
         click.echo(f"propmap: note: {blades} blades, from the UIUC data files' name ({shown}: {why}); give --blades "
                    "if the propeller measured has another count", err=True)
     if diameter_in is None and _is_family_file(base):

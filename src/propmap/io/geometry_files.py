@@ -41,7 +41,7 @@ from .qprop_file import _geometry as _qprop_geometry
 from .qprop_file import _is_qprop
 
 __all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "geometry_format", "MM_FAMILIES",
-           "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name", "name_without_blade_angle",
+           "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name", "name_blade_count", "name_without_blade_angle",
            "size_in_inches_from_name", "FIRST_STATION_MAX", "LAST_STATION_MIN", "LAST_STATION_REFUSED"]
 
 
@@ -271,15 +271,34 @@ def _uiuc_diameter(stem: str, size, diameter_in, where: str) -> tuple[float, str
     return diameter_in, note
 
 
+def name_blade_count(file_name: str) -> int | None:
+    """The blade count a propeller's file name gives, or None: a UIUC hub's ``_3b``, or a third
+    size figure (``6x4.5x3``, as HQProp names its three-blade propellers).
+
+    Parameters
+    ----------
+    file_name : str
+        A geometry or data file's name, or a propeller's (``_geom`` and an extension dropped).
+
+    Returns
+    -------
+    int or None
+        The count, 1-9.
+    """
+    # (an extension starts with a letter: a bare name's '5.1x3.7x3' lost '.7x3' as one)
+    bare = re.sub(r"(_geom)?(\.[a-z][a-z0-9]*)?$", "", file_name, flags=re.IGNORECASE)
+    count = re.search(r"_([1-9])b(?:_|$)", bare, re.IGNORECASE) or re.search(
+        r"\d(?:\.\d+)?x\d+(?:\.\d+)?x([1-9])(?:_|$)", bare, re.IGNORECASE)
+    return int(count.group(1)) if count else None
+
+
 def _warn_blade_count(file_name: str, n_blades: int, blades_given: bool, where: str) -> None:
     """Warn where the file name gives a blade count other than ``n_blades`` (given by the user)."""
     # a blade count in the name: a UIUC hub's "_3b", or a third size figure ("6x4.5x3", as HQProp names its
     # tri-blades); a user-level audit ran such files with --blades 2 unwarned
-    bare = re.sub(r"(_geom)?(\.[a-z0-9]+)?$", "", file_name, flags=re.IGNORECASE)
-    count = re.search(r"_([1-9])b(?:_|$)", bare, re.IGNORECASE) or re.search(
-        r"\d(?:\.\d+)?x\d+(?:\.\d+)?x([1-9])(?:_|$)", bare, re.IGNORECASE)
-    if count and blades_given and int(count.group(1)) != n_blades:
-        warnings.warn(f"{where}: {n_blades} blades (n_blades, --blades), not the {count.group(1)} of the file name",
+    count = name_blade_count(file_name)
+    if count and blades_given and count != n_blades:
+        warnings.warn(f"{where}: {n_blades} blades (n_blades, --blades), not the {count} of the file name",
                       UserWarning, stacklevel=4)
 
 
@@ -463,9 +482,14 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         return _own_size(path, _qprop_geometry(path, text, name=None, source="", detected=True), diameter_in,
                          n_blades, "QPROP", "Nblades (its second data line): ")
     if kind == "uiuc":
-        prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
-                              name=None, source="", blades_given=n_blades is not None)  # the file's own errors first
-        if n_blades is None:
+        named = name_blade_count(path.name) if n_blades is None else None
+        prop = _uiuc_geometry(path, text, diameter_in=diameter_in,
+                              n_blades=n_blades if n_blades is not None else named or 2, name=None, source="",
+                              blades_given=n_blades is not None)  # the file's own errors first
+        if n_blades is None and named:  # ('hqprop_5.1x3.7x3_geom.txt' was refused for want of a count it gives)
+            warnings.warn(f"{show_path(path)}: {named} blades, from the file name; give n_blades (--blades) if the "
+                          "propeller has another count", UserWarning, stacklevel=2)
+        elif n_blades is None:
             raise GeometryFileError(f"{show_path(path)}: a UIUC geometry file (r/R c/R beta) does not state the blade "
                                     "count: give it (--blades, n_blades); a wrong count scales the thrust (3 blades "
                                     "read as 2: -30% of static thrust on the APC 8x6E)")
