@@ -457,3 +457,17 @@ def test_a_third_size_figure_gives_the_blade_count(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "3 blades, from the UIUC data files' name (hqprop_5.1x3.7x3_static_0001.txt: its third size figure)" in err
     assert "not the 3 of the file name" not in err
+
+
+def test_loads_prints_the_geometrys_blade_angle_and_solidity(capsys):
+    """loads printed only the blade count and the diameter, where a misread twist or chord does not show: the APC
+    8x6E's blade angle at 0.75 R is the helix of its 6 in pitch, atan(6 / (0.75 pi 8)) = 17.66 deg."""
+    import json
+    import math
+
+    assert main(["loads", "apce_8x6", "--rpm", "6000"]) == 0
+    assert "2 blades, D = 0.2032 m, blade angle at 0.75 R 17.66 deg, solidity 0.0861; air:" in capsys.readouterr().out
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["theta75_deg"] == pytest.approx(math.degrees(math.atan(6 / (0.75 * math.pi * 8))), abs=0.01)
+    assert d["solidity"] == pytest.approx(0.0861, abs=5e-5)

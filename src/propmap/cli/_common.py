@@ -443,6 +443,19 @@ class Command(click.Command):
         return super().parse_args(ctx, args)
 
 
+def geometry_label(propeller) -> str:
+    """The geometry's blade angle at 0.75 R and solidity, as ``loads`` and ``trim`` print them (a
+    twist or chord misread shows there: the command printed only the diameter and the blade
+    count, a geometry audit, 2026-12-02)."""
+    return (f"blade angle at 0.75 R {math.degrees(propeller.theta_75()):.4g} deg, solidity "
+            f"{propeller.solidity():.3g}")
+
+
+def geometry_record(propeller) -> dict:
+    """:func:`geometry_label`'s values for a ``--json`` record: ``theta75_deg`` and ``solidity``."""
+    return {"theta75_deg": math.degrees(propeller.theta_75()), "solidity": propeller.solidity()}
+
+
 def echo_json(obj) -> None:
     """Print ``obj`` as JSON; NaN or inf anywhere is a bug, so it raises instead."""
     click.echo(json.dumps(obj, indent=2, allow_nan=False))

@@ -11,8 +11,8 @@ import click
 from ..core.units import RPM
 from ._air import air_label, air_record, resolve_air, with_air_options
 from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, PathArg, check_point, check_section_match,
-                      echo_json, fixed, load_params, set_collective_deg, warn, warn_incidence_radians,
-                      with_prop_options)
+                      echo_json, fixed, geometry_label, geometry_record, load_params, set_collective_deg, warn,
+                      warn_incidence_radians, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs
 # (the --points file's reader, cli/_points.py; its constants re-exported here, where they were)
@@ -245,7 +245,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     ratio = {k: (float(d[k]) if math.isfinite(float(d[k])) else None) for k in ("v_i_over_v_h", "lambda2")}
     result.update(ratio, state=str(d["state"]), converged=bool(r.converged), flags=r.flags())
     if as_json:
-        echo_json({**result, "propeller": propeller.name, "n_blades": propeller.n_blades,
+        echo_json({**result, "propeller": propeller.name, "n_blades": propeller.n_blades, **geometry_record(propeller),
                    "diameter_m": propeller.diameter, "params": label, "rpm": rpm, "airspeed": airspeed,
                    "incidence_deg": incidence_deg, "collective_deg": total_deg, "params_collective_deg": set_deg,
                    "air": air_record(air),
@@ -293,7 +293,8 @@ def _echo_point(propeller, params, air, label: str, r, result: dict, ratio: dict
                + (f", collective {total_deg:g} deg" if total_deg else "")
                + (f" ({set_deg:g} of the parameter set + {collective_deg:g})" if set_deg and collective_deg else "")
                + f" (params {label})")
-    click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
+    click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m, {geometry_label(propeller)}; air: "
+               f"{air_label(air)}")
     click.echo(f"  thrust T = {fixed(result['thrust'], 4)} N    drag D = {fixed(result['drag'], 4)} N")
     click.echo(f"  torque Q = {fixed(result['torque'], 5)} N m  power P = {fixed(result['power'], 2)} W")
     click.echo(f"  rolling moment M_R = {fixed(result['rolling_moment'], 5)} N m")

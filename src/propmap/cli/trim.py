@@ -10,7 +10,8 @@ import click
 from ..core.units import RPM
 from ._air import air_label, air_record, resolve_air, with_air_options
 from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, check_point, check_section_match, echo_json,
-                      fixed, load_params, set_collective_deg, warn, warn_incidence_radians, with_prop_options)
+                      fixed, geometry_label, geometry_record, load_params, set_collective_deg, warn,
+                      warn_incidence_radians, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, UNITS, _descent_outputs, numeric_keys
 
@@ -77,7 +78,7 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, rpm_rang
     searched = ({"rpm_range": list(rpm_range) if rpm_range is not None else
                  [w / RPM for w in default_omega_bounds(propeller, air)]} if solve_rpm else {"range_deg": [lo, hi]})
     if as_json:
-        echo_json({**out, "propeller": propeller.name, "n_blades": propeller.n_blades,
+        echo_json({**out, "propeller": propeller.name, "n_blades": propeller.n_blades, **geometry_record(propeller),
                    "diameter_m": propeller.diameter, "params": label, "airspeed": airspeed,
                    "incidence_deg": incidence_deg, "thrust_target": thrust, **searched,
                    "air": air_record(air),
@@ -174,7 +175,8 @@ def _echo_text(propeller, label, air, out: dict, searched: dict, airspeed, incid
     rpm, set_deg, added = out["rpm"], out["params_collective_deg"], out["added_collective_deg"]
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
                f"(params {label})")
-    click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
+    click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m, {geometry_label(propeller)}; air: "
+               f"{air_label(air)}")
     if out["solved_for"] == "rpm":
         a, b = searched["rpm_range"]
         click.echo(f"  {rpm:.1f} rpm ({omega:.4g} rad/s) makes T = {fixed(out['thrust'], 4)} N at collective "
