@@ -471,3 +471,14 @@ def test_loads_prints_the_geometrys_blade_angle_and_solidity(capsys):
     d = json.loads(capsys.readouterr().out)
     assert d["theta75_deg"] == pytest.approx(math.degrees(math.atan(6 / (0.75 * math.pi * 8))), abs=0.01)
     assert d["solidity"] == pytest.approx(0.0861, abs=5e-5)
+
+
+def test_a_load_in_a_force_or_torque_unit_under_another_name_is_named_in_the_refusal(tmp_path):
+    """A stand log's 'F(KG)' and 'T(N.M)' (a Chinese stand's export, as a public parser reads it) were refused as 'no
+    load column' without naming them; an accelerometer's 'ax(G)' is no force."""
+    path = tmp_path / "det.csv"
+    path.write_text("TIME(ms),PWM(us),ax(G),N(RPM),F(KG),T(N.M)\n"
+                    + "".join(f"{100 * k},{1100 + 100 * k},0.02,{3000 + 500 * k},0.2,0.01\n" for k in range(8)))
+    with pytest.raises(DataError, match=r"no load column: .*; column\(s\) 'F\(KG\)' in a force's unit and 'T\(N\.M\)' "
+                                        r"in a torque's unit: name the thrust 'thrust' and the torque 'torque'"):
+        read_loads(path)

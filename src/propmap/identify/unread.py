@@ -159,11 +159,18 @@ def _refuse_no_load(bases: dict, split: dict, found: str, error) -> None:
     # a balance's body-axis components (Fx, Fz, Mz) give the loads once resolved in the rotor's axes: said how (they
     # were told "no load column" only, a wind-tunnel data audit, 2026-12-02)
     body = [n for n, (b, _) in split.items() if _BODY_COMPONENT.fullmatch(b.replace("_", " "))]
+    # columns in a force's or a torque's unit under names propmap does not read ('F(KG)', 'T(N.M)' of a stand's log
+    # were not named: a thrust-stand export audit, 2026-12-02)
+    units = {kind: [n for n, (b, u) in split.items() if u is not None and _token(u) in UNITS[kind]
+                    and not _ACCELERATION_LIKE.search(b)] for kind in ("force", "torque")}
+    named = [f"{', '.join(map(repr, units[k][:2]))} in a {k}'s unit" for k in ("force", "torque") if units[k]]
     raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}" + (
         f"; {', '.join(map(repr, body[:3]))} look like a balance's axis components: propmap reads the loads in the "
         "rotor's axes, 'thrust' the force along the rotor axis in its direction (-Fz where z points against the "
         "thrust, as a z-down frame's), 'drag' the in-plane force along the in-plane airspeed and 'torque' the moment "
-        "about the axis: write those columns, resolved so (docs/conventions.md)" if body else ""))
+        "about the axis: write those columns, resolved so (docs/conventions.md)" if body else
+        f"; column(s) {' and '.join(named)}: name the thrust 'thrust' and the torque 'torque', with their units "
+        "(e.g. 'thrust (kgf)')" if named else ""))
 
 
 def _refuse_wind_axes_and_rates(cm: ColumnMap, split: dict, bases: dict, stems: dict, error) -> None:
