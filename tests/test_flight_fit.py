@@ -78,6 +78,10 @@ def test_centre_of_mass_is_recovered_from_the_moments():
     res = fit_flight(s, veh, base=truth, moments=True, options=FitOptions(names=("cg_x", "cg_y"), prior=False),
                      discretization=COARSE)
     np.testing.assert_allclose(fitted_centre_of_mass(res), [0.004, -0.002], atol=1e-9)
+    # each residual named by its axis, log and time, the moments' after the forces' (since 2026-12-02)
+    labels = res.extra["residual_labels"]
+    assert len(labels) == res.residuals.size == 6 * s.n
+    assert labels[0].startswith("Fx, ") and labels[3 * s.n].startswith("Mx / arm, ") and labels[-1].startswith("Mz")
     with pytest.raises(ValueError, match="no measured moment"):
         fit_flight(replace(s, moment=None), veh, moments=True, options=FitOptions(names=("cg_x",)))
 

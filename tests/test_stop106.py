@@ -40,19 +40,22 @@ def test_a_points_file_with_a_blade_pitch_at_a_station_is_refused(tmp_path, caps
     assert "column 'blade_pitch_75_deg' looks like a blade pitch setting" in capsys.readouterr().err
 
 
-def test_a_blade_pitch_word_among_others_is_noted(tmp_path):
-    """'pitch trim (deg)' may be a blade pitch setting: a note names collective_deg, the file reads."""
-    data = read_loads(_sweep(tmp_path / "s.csv", "pitch trim (deg)"))
+@pytest.mark.parametrize("name", ["pitch trim (deg)", "pitch_1"])
+def test_a_blade_pitch_word_among_others_is_noted(tmp_path, name):
+    """'pitch trim (deg)' or a channel's 'pitch_1' may be a blade pitch setting: a note names collective_deg, the file
+    reads ('pitch_1' was refused by a first version, its 1 taken for a station, a review)."""
+    data = read_loads(_sweep(tmp_path / "s.csv", name))
     assert data.collective is None and data.n == 6
-    assert any("column 'pitch trim (deg)' is not read; if it is a blade pitch setting, name it 'collective_deg'" in n
+    assert any(f"column {name!r} is not read; if it is a blade pitch setting, name it 'collective_deg'" in n
                for n in data.notes), data.notes
 
 
 @pytest.mark.parametrize("name", ["angle_pitch", "pitch rate (deg/s)", "Pitching moment (N m)", "prop_pitch_in",
-                                  "pitch (in)", "vehicle pitch (deg)"])
+                                  "pitch (in)", "vehicle pitch (deg)", "Geometric pitch", "geometric_pitch"])
 def test_other_pitches_read_as_before(tmp_path, name):
-    """Guard (passed before the fix): an attitude's pitch, a rate, a moment and a pitch in inches are no blade pitch
-    setting: the file reads, with no note on a blade pitch."""
+    """Guard (passed before the fix): an attitude's pitch, a rate, a moment, a pitch in inches and a propeller's
+    nominal (geometric) pitch are no blade pitch setting: the file reads, with no note on a blade pitch (the geometric
+    pitch was refused by a first version, a review)."""
     data = read_loads(_sweep(tmp_path / "s.csv", name))
     assert data.collective is None and data.n == 6
     assert not any("blade pitch" in n for n in data.notes), data.notes
@@ -109,8 +112,8 @@ def test_a_flight_stand_export_is_read_through_its_powertrain_prefix(tmp_path):
     assert data.n == len(truth) == 7
     np.testing.assert_allclose(data.measured["thrust"], truth[:, 1], rtol=0.01)
     np.testing.assert_allclose(data.measured["torque"], truth[:, 2], rtol=0.01)
-    assert data.notes[0] == ("the powertrain's prefix 'Powertrain 1 - ' is dropped from 11 column names (a Flight "
-                             "Stand export)")
+    assert data.notes[0] == ("the prefix 'Powertrain 1 - ' is dropped from 11 column names (a powertrain's, as a "
+                             "Flight Stand export writes them)")
     assert "'Powertrain 1 - force Fz (thrust) (kgf)' converted to N (x 9.80665)" in data.notes, data.notes
     assert any(n.startswith("thrust negated: 'Powertrain 1 - force Fz (thrust) (kgf)'") and "force axis Fz points "
                "along the slipstream" in n and "pusher" not in n for n in data.notes), data.notes
@@ -130,13 +133,34 @@ def test_a_flight_stand_export_of_two_powertrains_is_refused(tmp_path):
 
 
 def test_a_name_unit_table_is_not_taken_for_a_powertrain_prefix(tmp_path):
-    """Guard (read before): a prefix borne by fewer than 3 columns, or whose columns give no speed or load ('Ambient -
-    temperature (C)'), is kept: 'Test - 1' and 'Ambient - ...' are other columns' names."""
-    rows = "".join(f"{3000 + 500 * k},{0.5 + 0.3 * k},x,20,1013\n" for k in range(6))
+    """Guard (read before): a prefix borne by fewer than 3 columns ('Test - 1'), or by 3 whose columns give no speed or
+    load ('Ambient - temperature (C)', '... pressure', '... humidity'), is kept; so is one whose names without it
+    would repeat a column's ('thrust (N)' beside 'Run 1 - thrust (N)': it was refused as two thrust columns, a
+    review). 'Thrust - filtered' (no unit after ' - ') is another column, read as nothing (it was refused as an
+    unknown unit, a review)."""
+    rows = "".join(f"{3000 + 500 * k},{0.5 + 0.3 * k},x,20,1013,40,{0.4 + 0.3 * k}\n" for k in range(6))
     path = tmp_path / "t.csv"
-    path.write_text("rpm,thrust (N),Test - 1,Ambient - temperature (C),Ambient - pressure (hPa)\n" + rows)
+    path.write_text("rpm,thrust (N),Test - 1,Ambient - temperature (C),Ambient - pressure (hPa),Ambient - humidity (%),"
+                    "Thrust - filtered\n" + rows)
     data = read_loads(path)
-    assert data.n == 6 and not any("powertrain" in n for n in data.notes)
+    assert data.n == 6 and not any("prefix" in n for n in data.notes)
+    rows = "".join(f"{3000 + 500 * k},{0.5 + 0.3 * k},{0.5 + 0.3 * k},0.01,{3000 + 500 * k}\n" for k in range(6))
+    path.write_text("rpm,thrust (N),Run 1 - thrust (N),Run 1 - torque (N m),Run 1 - rpm\n" + rows)
+    data = read_loads(path)
+    assert data.n == 6 and "torque" not in data.measured and not any("prefix" in n for n in data.notes)
+
+
+def test_a_flight_stand_refusal_says_the_prefix_was_dropped(tmp_path):
+    """A Flight Stand export without a rotation speed was refused naming its columns without the prefix, which the
+    file does not have: the refusal says the prefix was dropped."""
+    head = ["Time (s)", *(f"Powertrain 1 - {c}" for c in ("ESC throttle (μs)", "force Fz (thrust) (N)",
+                                                          "torque MZ (torque) (N⋅m)", "voltage (V)"))]
+    path = tmp_path / "fs.csv"
+    path.write_text(",".join(head) + "\n" + "".join(f"{0.1 * k},1200,-1.0,-0.02,16\n" for k in range(10)),
+                    encoding="utf-8")
+    with pytest.raises(DataError, match=r"no rotation-speed column: .*\(the prefix 'Powertrain 1 - ' was dropped from "
+                                        r"4 column names"):
+        read_loads(path)
 
 
 def test_a_logger_time_in_milliseconds_is_read_as_the_time(tmp_path):
@@ -292,6 +316,33 @@ def test_an_escs_offline_readings_are_left_out_not_read_as_a_stopped_motor(tmp_p
     assert rpm.min() == 0.0  # (no flags kept: the zeros are the log's, read as written)
 
 
+def test_an_esc_never_online_or_offline_before_arming_is_read_as_logged(tmp_path):
+    """An ESC never marked online (its telemetry wire missing) made its column all NaN, refused as 'a gap in the log';
+    ESCs offline for the first 100 messages (zeros before arming) had their first online reading carried back over
+    them, ground samples read spinning (a review). Before an ESC's first online reading the readings stay as logged."""
+    import math
+
+    from propmap.io.flightlog import read_flight_log
+    from ulog_writer import write_ulog
+
+    t, topics = _px4_hover()
+    fields = [("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("uint8_t", "esc_online_flags"),
+              ("esc_report[4]", "esc")]
+    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")]}
+    topics["esc_status"] = (fields, [(ti, 4, 0b0111, *sum(([ti, 5000] for _ in range(4)), [])) for ti in t])
+    write_ulog(tmp_path / "never.ulg", topics, nested)
+    with pytest.warns(UserWarning, match=r"esc\[3\] never marked online \(esc_online_flags\): its readings are read "
+                                         "as logged"):
+        log = read_flight_log(tmp_path / "never.ulg")
+    assert (log.rotor_omega * 30 / math.pi == 5000).all()
+    topics["esc_status"] = (fields, [(ti, 4, 0 if i < 100 else 0b1111,
+                                      *sum(([ti, 0 if i < 100 else 5000] for _ in range(4)), []))
+                                     for i, ti in enumerate(t)])
+    write_ulog(tmp_path / "arm.ulg", topics, nested)
+    rpm = read_flight_log(tmp_path / "arm.ulg").rotor_omega * 30 / math.pi
+    assert (rpm[:100] == 0).all() and (rpm[101:] == 5000).all()
+
+
 def test_uavcan_escs_are_ordered_by_their_output_functions(tmp_path):
     """PX4's UAVCAN ESC driver fills esc[] by the ESC's index (UAVCAN output i+1) and names no actuator_function
     (PX4-Autopilot src/drivers/uavcan/actuators/esc.cpp): with UAVCAN_EC_FUNC1..4 = Motor3, Motor1, Motor4, Motor2
@@ -328,10 +379,19 @@ def test_a_vehicle_file_out_of_the_px4_logs_motor_order_is_warned_of(tmp_path, c
 
     t, topics = _px4_hover()
     topics["esc_status"] = ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[4]", "esc")],
-                            [(ti, 4, *sum(([ti, 5400] for _ in range(4)), [])) for ti in t])
-    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")]}
+                            [(ti, 4, *sum(([ti, 5400, 101 + k] for k in range(4)), [])) for ti in t])
+    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm"), ("uint8_t", "actuator_function")]}
     layout = [(0.13, 0.22, 0.05), (-0.13, -0.2, 0.05), (0.13, -0.22, -0.05), (-0.13, 0.2, -0.05)]  # (PX4's x500)
     params = {f"CA_ROTOR{i}_{k}": v for i, row in enumerate(layout) for k, v in zip(("PX", "PY", "KM"), row)}
+    # (guards: the parameters' defaults, every hub at the centre, and motor columns in entry order say nothing)
+    defaults = {f"CA_ROTOR{i}_{k}": v for i in range(4) for k, v in (("PX", 0.0), ("PY", 0.0), ("KM", 0.05))}
+    write_ulog(tmp_path / "d.ulg", topics, nested, params=defaults)
+    rows = [r[:2] + tuple(x for j, x in enumerate(r[2:]) if j % 3 < 2) for r in topics["esc_status"][1]]
+    plain = dict(topics, esc_status=(topics["esc_status"][0], rows))
+    write_ulog(tmp_path / "e.ulg", plain, {"esc_report": nested["esc_report"][:2]}, params=params)
+    for f in ("d.ulg", "e.ulg"):
+        assert main(["wrench", str(tmp_path / f), "--vehicle", "quadrotor", "--out", str(tmp_path / "w.csv")]) == 0
+        assert "the log's own geometry" not in capsys.readouterr().err
     write_ulog(tmp_path / "x.ulg", topics, nested, params=params)
     assert main(["wrench", str(tmp_path / "x.ulg"), "--vehicle", "quadrotor", "--out", str(tmp_path / "w.csv")]) == 0
     err = capsys.readouterr().err
@@ -482,3 +542,42 @@ def test_a_load_in_a_force_or_torque_unit_under_another_name_is_named_in_the_ref
     with pytest.raises(DataError, match=r"no load column: .*; column\(s\) 'F\(KG\)' in a force's unit and 'T\(N\.M\)' "
                                         r"in a torque's unit: name the thrust 'thrust' and the torque 'torque'"):
         read_loads(path)
+
+
+def test_a_pe0_header_of_other_words_than_columns_reads_its_13_columns(tmp_path):
+    """Guard (read before): a header that writes 'CROSS SECTION' as two words (14 words over 13 values a row) lost its
+    whole table once the header set the width ('no STATION/CHORD/.../TWIST table found', a review); a first row of a
+    width neither the header's nor 13 is refused naming its line."""
+    import numpy as np
+
+    import propmap as pm
+
+    name, lines = _pe0_lines()
+    head = next(i for i, ln in enumerate(lines) if "STATION" in ln.split() and "TWIST" in ln.split())
+    lines[head] = lines[head].replace("CROSS-SECTION", "CROSS SECTION")
+    path = tmp_path / name
+    path.write_text("\n".join(lines) + "\n")
+    np.testing.assert_allclose(pm.read_geometry(path).theta, pm.load_propeller("apce_8x6").theta, rtol=1e-12)
+    first = next(i for i, ln in enumerate(lines) if i > head and len(ln.split()) == 13 and ln.split()[0][0].isdigit())
+    lines[first] = lines[first] + "  0.0  0.0"
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(Exception, match=rf"line {first + 1}: 15 values in the station table's first row, where its "
+                                        "header names 14 columns"):
+        pm.read_geometry(path)
+
+
+def test_the_airspeed_line_is_not_said_beside_the_j_line_of_static_data(tmp_path):
+    """The airspeed line beside the advance-ratio line (said since 2026-12-02 for a flight set's faster logs) repeated
+    it for a static-stand set (J_max 0, airspeed_max 0, a review); a set fitted at airspeed still gets both."""
+    import propmap as pm
+    from propmap.io.coverage import coverage_warnings
+
+    prop, air = pm.load_propeller("apce_8x6"), pm.Air()
+    p = tmp_path / "static.toml"
+    pm.write_params(p, pm.default_params("apce_8x6"), coverage={"J_max": 0.0, "airspeed_max": 0.0})
+    (line,) = coverage_warnings(prop, str(p), air, 100.0, 0.5, 0.0, airspeed=10.0)
+    assert line.startswith("advance ratio up to 0.50")
+    q = tmp_path / "moving.toml"
+    pm.write_params(q, pm.default_params("apce_8x6"), coverage={"J_max": 0.24, "airspeed_max": 11.5})
+    assert [w.split(":")[0] for w in coverage_warnings(prop, str(q), air, 100.0, 0.5, 0.0, airspeed=15.0)] == [
+        "advance ratio up to 0.50", "airspeed up to 15 m/s"]

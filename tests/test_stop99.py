@@ -435,7 +435,7 @@ def test_a_pe0_row_of_fourteen_values_is_refused(tmp_path, capsys):
     out = tmp_path / src.name
     out.write_text("\n".join(lines) + "\n")
     assert main(["loads", str(out), "--rpm", "5000"]) == 2
-    assert f"line {k + 1}: 14 values where the station table's header names 13 columns (a value split by a blank?)" \
+    assert f"line {k + 1}: 14 values where the station table's rows have 13 (a value split by a blank?)" \
         in capsys.readouterr().err
 
 

@@ -446,13 +446,34 @@ class Command(click.Command):
 def geometry_label(propeller) -> str:
     """The geometry's blade angle at 0.75 R and solidity, as ``loads`` and ``trim`` print them (a
     twist or chord misread shows there: the command printed only the diameter and the blade
-    count, a geometry audit, 2026-12-02)."""
+    count, a geometry audit, 2026-12-02).
+
+    Parameters
+    ----------
+    propeller : Propeller
+
+    Returns
+    -------
+    str
+        "blade angle at 0.75 R <deg> deg, solidity <sigma>" (:meth:`Propeller.theta_75`,
+        :meth:`Propeller.solidity`).
+    """
     return (f"blade angle at 0.75 R {math.degrees(propeller.theta_75()):.4g} deg, solidity "
             f"{propeller.solidity():.3g}")
 
 
 def geometry_record(propeller) -> dict:
-    """:func:`geometry_label`'s values for a ``--json`` record: ``theta75_deg`` and ``solidity``."""
+    """:func:`geometry_label`'s values for a ``--json`` record.
+
+    Parameters
+    ----------
+    propeller : Propeller
+
+    Returns
+    -------
+    dict
+        ``theta75_deg`` [deg] and ``solidity`` [-].
+    """
     return {"theta75_deg": math.degrees(propeller.theta_75()), "solidity": propeller.solidity()}
 
 

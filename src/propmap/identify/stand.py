@@ -88,9 +88,12 @@ def _powertrain_columns(names: list, error) -> tuple[list, dict, str | None]:
                     "powertrain's columns (and the time's) to a file of their own")
     ours = set(groups[trains[0]])
     stripped = [_PREFIXED.match(n).group(2) if n in ours else n for n in names]
+    if len(set(stripped)) < len(stripped):  # (a name without the prefix beside it, 'thrust (N)' and 'Run 1 - thrust
+        # (N)': read as written, as before; it was refused as two thrust columns, a review)
+        return names, {}, None
     return stripped, dict(zip(stripped, names)), (
-        f"the powertrain's prefix {trains[0] + ' - '!r} is dropped from {len(ours)} column names (a Flight Stand "
-        "export)")
+        f"the prefix {trains[0] + ' - '!r} is dropped from {len(ours)} column names (a powertrain's, as a Flight Stand "
+        "export writes them)")
 
 
 def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None = None,
@@ -147,7 +150,12 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         powertrain's prefix is dropped from its names, with a note).
     """
     names, original, note = _powertrain_columns(list(names), error)
-    cm = _map_columns(names, rpm_source, pole_pairs, error)
+    try:
+        cm = _map_columns(names, rpm_source, pole_pairs, error)
+    except error as exc:  # (the refusal names the columns without the prefix: said so, a review)
+        if not original:
+            raise
+        raise error(f"{exc} ({note.replace('is dropped', 'was dropped')})") from None
     if original:  # (the file's columns are read, and named in the notes, by their names as written)
         cm.columns = {q: (original[c[0]], *c[1:]) for q, c in cm.columns.items()}
         for short, name in original.items():

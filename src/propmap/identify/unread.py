@@ -92,12 +92,21 @@ def _pitch_words(base: str) -> str | None:
         {"blade", "blades"} & set(words) and {"angle", "setting"} & set(words))
     if not is_pitch or _NOT_PITCH.intersection(words):
         return None
-    station = [w for w in words if re.fullmatch(r"[\d.,/%]+r?", w)]
+    station = [w for w in words if _station(w)]
     if [w for w in words if w not in _PITCH_WORDS and w not in station]:
         return "among"
-    # (the blade's own words or a station make it a blade's; 'angle_pitch', 'prop pitch' may be an attitude's)
-    blade = station or {"blade", "blades", "collective", "setting", "set", "geometric"} & set(words)
+    # (the blade's own words or a station make it a blade's; 'angle_pitch', 'prop pitch' may be an attitude's, and a
+    # 'geometric pitch' a propeller's nominal pitch, in inches: a review)
+    blade = station or {"blade", "blades", "collective", "setting", "set"} & set(words)
     return "only" if blade or " ".join(words) in _loose(_PITCH_LIKE) else None
+
+
+def _station(word: str) -> bool:
+    """Whether a word of a column name is a station along the blade: a fraction or percentage of
+    the radius (``75%``, ``0.75``, ``0.75r``, ``75r``, ``3/4``, ``75``), not a channel's number
+    (``pitch_1``: a review)."""
+    return bool(re.fullmatch(r"\d+(\.\d+)?%|\d*\.\d+r?|\d+r|\d+/\d+", word)) or (
+        word.isdigit() and 50 <= int(word) <= 100)
 
 
 def _blade_pitch(base: str) -> bool:

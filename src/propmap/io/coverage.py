@@ -136,7 +136,9 @@ def coverage_warnings(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
                       f"and gill2019 cases){descent}" if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
     # (a flight fit's edgewise speed shows in no advance ratio; said beside those lines too since 2026-12-02: a log
     # at 15-18 m/s on a set fitted to 11.5 m/s was told only of J 0.25 against 0.24, an audit of faster flights)
-    if airspeed is not None and "airspeed_max" in cov and airspeed_beyond(airspeed, cov["airspeed_max"]):
+    # (not beside the J line of static data, airspeed_max 0, which says the same: a review)
+    if (airspeed is not None and "airspeed_max" in cov and airspeed_beyond(airspeed, cov["airspeed_max"])
+            and not (beyond_J and cov["airspeed_max"] == 0)):
         out.append(f"airspeed up to {airspeed:.3g} m/s: the data behind {label} reach {cov['airspeed_max']:.3g} m/s")
     if rpm is not None:
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))

@@ -100,21 +100,21 @@ def _pe0_summary(text: str, key: str, where: str) -> tuple[str, int]:
 
 
 def _pe0_table(lines, where: str) -> tuple[list, list, int | None, list]:
-    """The station table of a PE0 file's ``lines``: its rows (as many numbers each as its header
-    names columns, one word each: PE0_COLUMNS in APC's v2022 files, 14 in later ones with a rake
-    column), the line number of each, the line that ended the table (None at the end of the file)
-    and the header's words; refuses a non-numeric or non-finite value in a station row, naming
-    its line and column, and a file without the table."""
+    """The station table of a PE0 file's ``lines``: its rows (as many numbers each as its first row
+    holds: PE0_COLUMNS in APC's v2022 files, 14 in later ones with a rake column), the line number
+    of each, the line that ended the table (None at the end of the file) and the header's words
+    where they name the columns one word each (else none: TWIST is then the 8th of 13 columns);
+    refuses a first row of another width than its header's words and PE0_COLUMNS, a later row of
+    more values than the first (a value split by a blank), a non-numeric or non-finite value in a
+    station row, naming its line and column, and a file without the table."""
     rows, row_lines, header = [], [], []
     in_table = False
     end = None  # the line that ended the station table
-    ncol = PE0_COLUMNS
+    ncol = None  # the width of the table's rows: its first row's
     for k, ln in enumerate(lines, start=1):
         parts = ln.split()
         if "STATION" in parts and "TWIST" in parts:
             in_table, header = True, parts
-            # (a later file's 14 columns were refused as 'a value split by a blank': a geometry audit, 2026-12-02)
-            ncol = len(parts) if PE0_COLUMNS <= len(parts) <= _PE0_MAX_COLUMNS else PE0_COLUMNS
             continue
         if not in_table:
             continue
@@ -127,17 +127,28 @@ def _pe0_table(lines, where: str) -> tuple[list, list, int | None, list]:
                 bad = x
                 break
         if bad is not None:
-            if len(parts) >= ncol and vals:  # a station row (it starts with a number) with a bad value
+            if len(parts) >= (ncol or PE0_COLUMNS) and vals:  # a station row (it starts with a number), a bad value
                 raise GeometryFileError(f"{where}, line {k}: non-numeric value {_clip(bad, 40)} in the station table")
             if rows:
                 end = k
                 break
             continue  # the units line under the header
-        if len(vals) > ncol:  # (a value split by a blank shifted TWIST to the thickness ratio without a word:
-            # a file audit, 2026-12-01; every PE0 file of the catalogue and ../shared has 13 values a row)
-            raise GeometryFileError(f"{where}, line {k}: {len(vals)} values where the station table's header names "
-                                    f"{ncol} columns (a value split by a blank?)")
-        if len(vals) == ncol:
+        if ncol is None and len(vals) >= PE0_COLUMNS:
+            # (by the header where its words name the columns: a later file's 14 columns were refused as 'a value
+            # split by a blank', a geometry audit, 2026-12-02; a header of other words, 'CROSS SECTION', with 13 values
+            # a row: the v2022 columns, a review)
+            if len(vals) == len(header) <= _PE0_MAX_COLUMNS:
+                ncol = len(vals)
+            elif len(vals) == PE0_COLUMNS:
+                ncol, header = PE0_COLUMNS, []
+            else:
+                raise GeometryFileError(f"{where}, line {k}: {len(vals)} values in the station table's first row, "
+                                        f"where its header names {len(header)} columns (a value split by a blank?)")
+        if ncol is not None and len(vals) > ncol:  # (a value split by a blank shifted TWIST to the thickness ratio
+            # without a word: a file audit, 2026-12-01; every PE0 file of the catalogue and ../shared has 13 a row)
+            raise GeometryFileError(f"{where}, line {k}: {len(vals)} values where the station table's rows have "
+                                    f"{ncol} (a value split by a blank?)")
+        if ncol is not None and len(vals) == ncol:
             for j, v in enumerate(vals):
                 if not math.isfinite(v):
                     col = header[j][:20] if j < len(header) else "?"
@@ -150,7 +161,7 @@ def _pe0_table(lines, where: str) -> tuple[list, list, int | None, list]:
             break
     if not rows:
         raise GeometryFileError(f"{where}: no STATION/CHORD/.../TWIST table found")
-    return rows, row_lines, end, header if len(header) == ncol else []
+    return rows, row_lines, end, header
 
 
 def _pe0_radius_blades(text: str, where: str) -> tuple[float, str, int]:
