@@ -271,15 +271,10 @@ def test_a_flight_fits_residuals_are_named_by_axis_log_and_time():
 
 # ---- PX4 ULog: an ESC's telemetry marked offline (io/ulog.py; a PX4 audit, 2026-12-02) -------------------------------
 def _px4_hover(n=400, hz=100.0):
-    """(timestamps [us], the four topics besides the motors) of a PX4 log hovering level at rest."""
-    t = [1_000_000 + int(i * 1e6 / hz) for i in range(n)]
-    xyz = [("uint64_t", "timestamp"), ("float[3]", "xyz")]
-    return t, {
-        "vehicle_acceleration": (xyz, [(ti, 0.0, 0.0, -9.80665) for ti in t]),
-        "vehicle_angular_velocity": (xyz, [(ti, 0.0, 0.0, 0.0) for ti in t]),
-        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")], [(ti, 1.0, 0.0, 0.0, 0.0) for ti in t]),
-        "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
-                                   [(ti, 0.0, 0.0, 0.0) for ti in t])}
+    """(timestamps [us], the four topics besides the motors) of a PX4 log flying level at 1 m/s (test_flightlog's)."""
+    from tests.test_flightlog import _px4_topics
+
+    return _px4_topics(n, hz)
 
 
 def test_an_escs_offline_readings_are_left_out_not_read_as_a_stopped_motor(tmp_path):
