@@ -769,10 +769,9 @@ def test_a_blade_count_in_a_geometry_files_name_is_compared(tmp_path, stem):
     p = _write(tmp_path, f"{stem}.txt", b"r/R c/R beta\n0.2 0.15 30\n0.5 0.2 20\n0.75 0.18 14\n1.0 0.08 10\n")
     with pytest.warns(UserWarning, match=r"2 blades \(n_blades, --blades\), not the 3 of the file name"):
         read_geometry(p, n_blades=2)
-    with pytest.raises(GeometryFileError, match="does not state the blade"):  # (no count given: refused, unwarned)
-        with warnings.catch_warnings():
-            warnings.simplefilter("error")
-            read_geometry(p)
+    # (no count given: the name's, with a warning, since 2026-12-02; refused before, for want of a count it gives)
+    with pytest.warns(UserWarning, match=r"3 blades, from the file name"):
+        assert read_geometry(p).n_blades == 3
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert read_geometry(p, n_blades=3).diameter == pytest.approx(6 * 0.0254)

@@ -2,9 +2,14 @@
 guards said so (what a fix must keep: files that read before). Data: synthetic load files (a collective sweep of the
 catalogue's APC 10x7E, UIUC geometry)."""
 
+import math
 import re
+from pathlib import Path
 
+import numpy as np
 import pytest
+
+import propmap as pm
 
 from propmap.cli.main import main
 from propmap.identify import DataError, read_loads
@@ -75,9 +80,6 @@ def test_a_bare_pitch_beside_an_airspeed_is_still_refused_as_a_flow_angle(tmp_pa
 def test_an_unknown_key_in_a_table_names_the_nearest_valid_one(tmp_path, capsys, table, typo, meant):
     """A parameter file's top level said 'did you mean cl_alpha?' for 'cl_alhpa', its [body] and [coverage] tables and
     the vehicle file only listed every valid key (2026-12-02)."""
-    from pathlib import Path
-
-    import propmap as pm
 
     examples = Path(pm.__file__).parent / "data" / "examples"
     if table in ("body", "coverage"):
@@ -102,7 +104,6 @@ def test_a_flight_stand_export_is_read_through_its_powertrain_prefix(tmp_path):
     """A Flight Stand export ('Powertrain 1 - force Fz (thrust) (kgf)', 'Powertrain 1 - rotation speed (rpm)', ...) was
     refused (no rotation-speed column); its thrust, negative on the stand's Fz axis, was said to come from 'a pusher
     mount'. The loads are propmap's own (tests/stand_exports.py), so the steps read are checked against them."""
-    import numpy as np
 
     from stand_exports import write_steps_export
 
@@ -205,12 +206,9 @@ def test_the_descent_state_warning_counts_samples_with_a_rotor_in_its_wake():
     """Three samples of the example quadrotor at its hover speed: at rest, descending at 4 m/s (the vortex-ring band:
     k ~ 0.6 of its v_h ~ 6.6 m/s) and flying forward at 10 m/s. Only the descent is counted; ``keep`` counts the
     samples it keeps."""
-    import numpy as np
 
-    import propmap as pm
     from propmap.cli._vehicle import _descent_state_warning
 
-    from pathlib import Path
 
     veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
     params = pm.generic_params()
@@ -237,7 +235,6 @@ def test_wrench_warns_of_the_race_tracks_descents(shared_data, tmp_path, capsys)
 def test_an_incidence_within_a_tenth_of_a_degree_of_the_datas_is_not_warned_of(tmp_path):
     """A vertical descent (180 deg) on a flight set whose logs reached 179.971 deg was warned of, the only line said;
     0.1 deg beyond is within the data now, 0.5 deg still warned of."""
-    import propmap as pm
     from propmap.io.coverage import coverage_warnings
 
     p = tmp_path / "p.toml"
@@ -257,7 +254,6 @@ def test_a_flight_fits_residuals_are_named_by_axis_log_and_time():
     log and time now, in the residual vector's order (the force errors sample by sample, then the moments')."""
     from types import SimpleNamespace
 
-    import numpy as np
 
     from propmap.identify.flight import _residual_labels
 
@@ -282,9 +278,6 @@ def test_an_escs_offline_readings_are_left_out_not_read_as_a_stopped_motor(tmp_p
     (PX4's own ESC check reads bit k as esc[k] online): the zeros were read as a stopped motor and interpolated into
     the samples around them (0-4050 rpm in a hover). Now they are left out with a warning, the speed interpolated
     between the online readings; flags never set (0 throughout: not kept) leave every reading in."""
-    import math
-
-    import numpy as np
 
     from propmap.io.flightlog import read_flight_log
     from ulog_writer import write_ulog
@@ -315,7 +308,6 @@ def test_an_esc_never_online_or_offline_before_arming_is_read_as_logged(tmp_path
     """An ESC never marked online (its telemetry wire missing) made its column all NaN, refused as 'a gap in the log';
     ESCs offline for the first 100 messages (zeros before arming) had their first online reading carried back over
     them, ground samples read spinning (a review). Before an ESC's first online reading the readings stay as logged."""
-    import math
 
     from propmap.io.flightlog import read_flight_log
     from ulog_writer import write_ulog
@@ -342,9 +334,6 @@ def test_uavcan_escs_are_ordered_by_their_output_functions(tmp_path):
     """PX4's UAVCAN ESC driver fills esc[] by the ESC's index (UAVCAN output i+1) and names no actuator_function
     (PX4-Autopilot src/drivers/uavcan/actuators/esc.cpp): with UAVCAN_EC_FUNC1..4 = Motor3, Motor1, Motor4, Motor2
     the speeds were read in entry order, [5300, 5100, 5400, 5200] rpm for motors 1-4's [5100, ..., 5400]."""
-    import math
-
-    import numpy as np
 
     from propmap.io.flightlog import read_flight_log
     from ulog_writer import write_ulog
@@ -363,21 +352,27 @@ def test_uavcan_escs_are_ordered_by_their_output_functions(tmp_path):
     assert "in entry order" in read_flight_log(tmp_path / "plain.ulg", n_motors=4).motor_order
 
 
-def test_a_vehicle_file_out_of_the_px4_logs_motor_order_is_warned_of(tmp_path, capsys):
-    """A PX4 log carries its vehicle's geometry (CA_ROTORn_PX, _PY, _KM; PX4's x500: motor 1 front-right ccw, 2
-    back-left ccw, 3 front-left cw, 4 back-right cw): the example quadrotor's file (front-left ccw first) was read
-    without a word on such a log, its moments those of other rotors. A file in the log's order reads silently."""
-    from pathlib import Path
-
-    import propmap as pm
-    from ulog_writer import write_ulog
-
+def _px4_x500():
+    """(timestamps, topics, nested formats, parameters) of a PX4 log of PX4's x500 quad X at 5400 rpm, its ESC entries
+    naming motors 1-4 and its control allocation's rotor geometry (motor 1 front-right ccw, 2 back-left ccw, 3
+    front-left cw, 4 back-right cw)."""
     t, topics = _px4_hover()
     topics["esc_status"] = ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[4]", "esc")],
                             [(ti, 4, *sum(([ti, 5400, 101 + k] for k in range(4)), [])) for ti in t])
     nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm"), ("uint8_t", "actuator_function")]}
-    layout = [(0.13, 0.22, 0.05), (-0.13, -0.2, 0.05), (0.13, -0.22, -0.05), (-0.13, 0.2, -0.05)]  # (PX4's x500)
+    layout = [(0.13, 0.22, 0.05), (-0.13, -0.2, 0.05), (0.13, -0.22, -0.05), (-0.13, 0.2, -0.05)]
     params = {f"CA_ROTOR{i}_{k}": v for i, row in enumerate(layout) for k, v in zip(("PX", "PY", "KM"), row)}
+    return t, topics, nested, params
+
+
+def test_a_vehicle_file_out_of_the_px4_logs_motor_order_is_warned_of(tmp_path, capsys):
+    """A PX4 log carries its vehicle's geometry (CA_ROTORn_PX, _PY, _KM; PX4's x500: motor 1 front-right ccw, 2
+    back-left ccw, 3 front-left cw, 4 back-right cw): the example quadrotor's file (front-left ccw first) was read
+    without a word on such a log, its moments those of other rotors. A file in the log's order reads silently."""
+
+    from ulog_writer import write_ulog
+
+    t, topics, nested, params = _px4_x500()
     # (guards: the parameters' defaults, every hub at the centre, and motor columns in entry order say nothing)
     defaults = {f"CA_ROTOR{i}_{k}": v for i in range(4) for k, v in (("PX", 0.0), ("PY", 0.0), ("KM", 0.05))}
     write_ulog(tmp_path / "d.ulg", topics, nested, params=defaults)
@@ -443,9 +438,6 @@ def test_a_pe0_table_with_a_fourteenth_column_is_read_by_its_header(tmp_path):
     """APC's later PE0 files add a rake column before TWIST (14 values a row, TWIST the 9th, as a public converter of
     APC's 2026-02 archive reads them): such a file was refused as 'a value split by a blank'. A column of zeros named
     RAKE(Z) added to the catalogue's 8x6E file gives the same propeller."""
-    import numpy as np
-
-    import propmap as pm
 
     name, lines = _pe0_lines()
     head = next(i for i, ln in enumerate(lines) if "STATION" in ln.split() and "TWIST" in ln.split())
@@ -469,9 +461,6 @@ def test_pe0_stations_inside_the_hub_transition_are_left_out(tmp_path):
     """APC's later files tabulate the hub fairing inside HUBTRA (TWIST from 0 deg), which its v2022 files start at:
     read as blade it moved a 5x3.75 propeller's static thrust by +0.9% and its CT at J = 0.6 by -3.6%. Two stations
     put inside the catalogue's 8x6E file's HUBTRA are left out with a warning; the propeller is the catalogue's."""
-    import numpy as np
-
-    import propmap as pm
 
     name, lines = _pe0_lines()
     first = next(i for i, ln in enumerate(lines) if len(ln.split()) == 13 and ln.split()[0][0].isdigit())
@@ -518,7 +507,6 @@ def test_loads_prints_the_geometrys_blade_angle_and_solidity(capsys):
     """loads printed only the blade count and the diameter, where a misread twist or chord does not show: the APC
     8x6E's blade angle at 0.75 R is the helix of its 6 in pitch, atan(6 / (0.75 pi 8)) = 17.66 deg."""
     import json
-    import math
 
     assert main(["loads", "apce_8x6", "--rpm", "6000"]) == 0
     assert "2 blades, D = 0.2032 m, blade angle at 0.75 R 17.66 deg, solidity 0.0861; air:" in capsys.readouterr().out
@@ -543,9 +531,6 @@ def test_a_pe0_header_of_other_words_than_columns_reads_its_13_columns(tmp_path)
     """Guard (read before): a header that writes 'CROSS SECTION' as two words (14 words over 13 values a row) lost its
     whole table once the header set the width ('no STATION/CHORD/.../TWIST table found', a review); a first row of a
     width neither the header's nor 13 is refused naming its line."""
-    import numpy as np
-
-    import propmap as pm
 
     name, lines = _pe0_lines()
     head = next(i for i, ln in enumerate(lines) if "STATION" in ln.split() and "TWIST" in ln.split())
@@ -564,7 +549,6 @@ def test_a_pe0_header_of_other_words_than_columns_reads_its_13_columns(tmp_path)
 def test_the_airspeed_line_is_not_said_beside_the_j_line_of_static_data(tmp_path):
     """The airspeed line beside the advance-ratio line (said since 2026-12-02 for a flight set's faster logs) repeated
     it for a static-stand set (J_max 0, airspeed_max 0, a review); a set fitted at airspeed still gets both."""
-    import propmap as pm
     from propmap.io.coverage import coverage_warnings
 
     prop, air = pm.load_propeller("apce_8x6"), pm.Air()
@@ -576,3 +560,333 @@ def test_the_airspeed_line_is_not_said_beside_the_j_line_of_static_data(tmp_path
     pm.write_params(q, pm.default_params("apce_8x6"), coverage={"J_max": 0.24, "airspeed_max": 11.5})
     assert [w.split(":")[0] for w in coverage_warnings(prop, str(q), air, 100.0, 0.5, 0.0, airspeed=15.0)] == [
         "advance ratio up to 0.50", "airspeed up to 15 m/s"]
+
+
+
+# ---- tests from the mutation audit of this stop's change (each kills a mutant the suite let pass) ------------------
+EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
+
+
+def test_a_powertrain_prefix_is_a_prefix_of_3_columns_one_a_load_or_speed():
+    """The rule of _powertrain_columns, each side of it: a Flight Stand export of 3 channels is read through its prefix;
+    a prefix on 2 columns ('Raw - thrust (N)' beside the read thrust), or on columns of no load or speed (the time,
+    the ESC signal, a group; an ambient sensor's), is another column's name and kept; a hyphen without blanks
+    ('Motor-Speed (rpm)') is no prefix."""
+    from propmap.identify.stand import map_columns
+
+    cm = map_columns(["Time (s)", "Powertrain 1 - force Fz (thrust) (N)", "Powertrain 1 - torque MZ (torque) (N⋅m)",
+                      "Powertrain 1 - rotation speed (rpm)"])
+    assert cm.columns["rpm"][0] == "Powertrain 1 - rotation speed (rpm)"
+    assert cm.notes[0].startswith("the prefix 'Powertrain 1 - ' is dropped from 3 column names")
+    for names in (["rpm", "thrust (N)", "torque (N m)", "Raw - thrust (N)", "Raw - torque (N m)"],
+                  ["rpm", "thrust (N)", "Logger - time (s)", "Logger - ESC signal (us)", "Logger - group"],
+                  ["rpm", "thrust (N)", "Ambient - temperature (C)", "Ambient - pressure (hPa)",
+                   "Ambient - humidity (%)"]):
+        cm = map_columns(names)
+        assert cm.columns["thrust"][0] == "thrust (N)" and "time" not in cm.columns, (names, cm.columns)
+        assert not any("prefix" in n for n in cm.notes), (names, cm.notes)
+    cm = map_columns(["Time (s)", "Thrust (N)", "RPM", "Motor-Temp (C)", "Motor-Current (A)", "Motor-Speed (rpm)"])
+    assert cm.columns["rpm"][0] == "RPM" and not any("prefix" in n for n in cm.notes)
+
+
+def test_a_flight_stand_export_without_a_load_channel_is_refused_for_its_load():
+    """A powertrain's rotation speed makes its prefix a powertrain's: the export is refused for want of a load, not of
+    the speed it has."""
+    from propmap.identify.stand import map_columns
+
+    with pytest.raises(ValueError, match="no load column"):
+        map_columns(["Time (s)", "Powertrain 1 - ESC throttle (μs)", "Powertrain 1 - rotation speed (rpm)",
+                     "Powertrain 1 - voltage (V)"])
+
+
+@pytest.mark.parametrize("name", ["time_us", "Time_sec", "timestamp_ms", "timestamp_s"])
+def test_a_loggers_time_under_its_other_names_is_read_as_the_time(name):
+    from propmap.identify.stand import map_columns
+
+    assert map_columns(["RPM", "Thrust (N)", name]).columns["time"][0] == name
+
+
+def test_an_unread_speed_in_the_dash_unit_form_is_refused_as_its_bracket_form_is():
+    """'Wind (m/s)' is refused as an unread airspeed; 'Wind - m/s' (the ' - ' unit form, read since this stop) was left
+    unread without a word, every point taken as static (the mutation audit)."""
+    from propmap.identify.stand import map_columns
+
+    with pytest.raises(ValueError, match="column 'Wind \\(m/s\\)' looks like an airspeed"):
+        map_columns(["rpm", "Thrust (gf)", "Wind (m/s)"])
+    with pytest.raises(ValueError, match="column 'Wind - m/s' looks like an airspeed"):
+        map_columns(["rpm", "Thrust - gf", "Wind - m/s"])
+
+
+def test_a_collective_angle_is_refused_as_a_blade_pitch(tmp_path):
+    with pytest.raises(DataError, match="column 'Collective angle \\(deg\\)' looks like a blade pitch setting"):
+        read_loads(_sweep(tmp_path / "s.csv", "Collective angle (deg)"))
+
+
+def test_an_angle_that_is_no_pitch_gets_no_pitch_note(tmp_path):
+    """'phase angle (deg)': an angle's word alone makes no blade pitch."""
+    data = read_loads(_sweep(tmp_path / "s.csv", "phase angle (deg)"))
+    assert data.n == 6 and not any("blade pitch" in n for n in data.notes), data.notes
+
+
+def test_a_pitch_angle_beside_an_airspeed_is_refused_as_a_flow_angle(tmp_path):
+    """'Pitch angle (deg)' beside an airspeed may be a sting's pitch: a flow angle, as 'Pitch (deg)'."""
+    with pytest.raises(DataError, match="column 'Pitch angle \\(deg\\)' looks like a flow angle"):
+        read_loads(_sweep(tmp_path / "s.csv", "Pitch angle (deg)", airspeed=True))
+
+
+def test_two_columns_in_a_forces_unit_are_both_named(tmp_path):
+    path = tmp_path / "f.csv"
+    path.write_text("RPM,F1(KG),F2(KG)\n" + "".join(f"{3000 + 500 * k},0.2,0.3\n" for k in range(6)))
+    with pytest.raises(DataError, match=r"column\(s\) 'F1\(KG\)', 'F2\(KG\)' in a force's unit: name the thrust"):
+        read_loads(path)
+
+
+def test_did_you_mean_ignores_case_and_takes_the_first_unknown_key(tmp_path, capsys):
+    """A rotor's 'SPIN' is 'spin' (case ignored); of two unknown keys the first (sorted) is matched; a [coverage]
+    text key and a top-level text key are among the valid ones."""
+    text = (EXAMPLES / "quadrotor.toml").read_text()
+    (tmp_path / "v.toml").write_text(text.replace("spin =", "SPIN =", 1))
+    assert main(["trim-vehicle", "--vehicle", str(tmp_path / "v.toml"), "--airspeed", "0"]) == 2
+    assert "unknown key(s) SPIN: did you mean spin?" in capsys.readouterr().err
+    params = (EXAMPLES / "neurobem_quadrotor.params.toml").read_text()
+    for old, new, meant in (("wash_factor =", "wash_factr = 0.5\nzz_extra =", "wash_factor"),
+                            ("J_max =", 'propeler = "apce_8x6"\nJ_max =', "propeller")):
+        (tmp_path / "p.toml").write_text(params.replace(old, new, 1))
+        assert main(["loads", "apce_8x6", "--rpm", "5000", "--params", str(tmp_path / "p.toml")]) == 2
+        assert f": did you mean {meant}? (" in capsys.readouterr().err
+    (tmp_path / "p.toml").write_text('commentt = "x"\n' + params)
+    assert main(["loads", "apce_8x6", "--rpm", "5000", "--params", str(tmp_path / "p.toml")]) == 2
+    assert ": did you mean comment? (" in capsys.readouterr().err
+
+
+def test_fit_flight_names_its_residuals_and_counts_the_training_logs_descents(shared_data, tmp_path, capsys):
+    """fit flight (the race track fitted at 2 Hz, the figure-8 held out): the report's residuals are named by axis,
+    log and time, and the training samples with a rotor descending into its wake are counted (the figure-8 has
+    none)."""
+    logs = shared_data / "neurobem_flights"
+    assert main(["fit", "flight", str(logs / "bemnn20210218171908seg2.mat"), str(logs / "bemnn20210218170320seg2.mat"),
+                 "--vehicle", "neurobem_quadrotor", "--holdout", "bemnn20210218170320seg2.mat", "--rate-hz", "2",
+                 "--out", str(tmp_path / "p.toml")]) == 0
+    out, err = capsys.readouterr()
+    assert re.search(r"#\d+ [-+][\d.]+ \(Fz, bemnn20210218171908seg2\.mat, t [\d.]+ s\)", out), out
+    assert re.search(r"warning: [1-9]\d* of 64 samples of the training logs \([\d.]+%\) have a rotor in the "
+                     "vortex-ring", err), err
+    assert "samples of held-out log" not in err
+
+
+def test_fit_flight_warns_of_a_vehicle_file_out_of_the_px4_logs_motor_order(tmp_path, capsys):
+    from ulog_writer import write_ulog
+
+    t, topics, nested, params = _px4_x500()
+    write_ulog(tmp_path / "a.ulg", topics, nested, params=params)
+    main(["fit", "flight", str(tmp_path / "a.ulg"), "--vehicle", "quadrotor", "--out", str(tmp_path / "p.toml"),
+          "--rate-hz", "5"])
+    assert "a.ulg: the log's own geometry (PX4's CA_ROTORn_PX, _PY, _KM) has motors 1..4" in capsys.readouterr().err
+
+
+def _quad_and_layout():
+    from types import SimpleNamespace
+
+    veh = pm.read_vehicle(EXAMPLES / "quadrotor.toml")
+    return veh, lambda layout: SimpleNamespace(name="x.ulg", rotor_layout=np.asarray(layout, float))
+
+
+def _turned(lay, deg):
+    c, s = math.cos(math.radians(deg)), math.sin(math.radians(deg))
+    return np.column_stack([c * lay[:, 0] - s * lay[:, 1], s * lay[:, 0] + c * lay[:, 1], lay[:, 2]])
+
+
+def test_the_layout_check_turns_on_30_degrees_and_on_a_spin():
+    """The vehicle file's own layout turned by 20 deg is within the check, by 45 deg not (every rotor); one spin
+    flipped names that rotor without a count; a rotor mounted upside down (axis -z, spin flipped) and an offset
+    centre of mass (the log's positions are about it) are the same layout."""
+    from dataclasses import replace
+
+    from propmap.cli._vehicle import _layout_warnings
+
+    veh, log = _quad_and_layout()
+    lay = np.array([[r.position[0], r.position[1], r.spin] for r in veh.rotors])
+    assert _layout_warnings([log(lay)], veh) == [] and _layout_warnings([log(_turned(lay, 20))], veh) == []
+    (line,) = _layout_warnings([log(_turned(lay, 45))], veh)
+    assert "(4 rotors differ)" in line
+    flipped = lay.copy()
+    flipped[2, 2] *= -1
+    (line,) = _layout_warnings([log(flipped)], veh)
+    assert "the vehicle file's rotor 3 is back-right ccw: list" in line
+    rotors = list(veh.rotors)
+    rotors[0] = replace(rotors[0], axis=np.array([0.0, 0, -1]), spin=-rotors[0].spin)
+    assert _layout_warnings([log(lay)], replace(veh, rotors=tuple(rotors))) == []
+    c = np.array([0.3, 0.0, 0.0])
+    moved = replace(veh, centre_of_mass=c, rotors=tuple(replace(r, position=r.position + c) for r in veh.rotors))
+    assert _layout_warnings([log(lay)], moved) == []
+
+
+def test_a_rotor_in_the_turbulent_wake_state_is_counted():
+    from propmap.cli._vehicle import _descent_state_warning
+
+    veh = pm.read_vehicle(EXAMPLES / "quadrotor.toml")
+    params = pm.generic_params()
+    omega = pm.hover_omega(veh, params)
+    w = pm.vehicle_wrench(veh, params, np.array([[0.0, 0, -9.0]]), np.zeros((1, 3)), np.full((1, 4), omega))
+    assert str(np.ravel(w.loads[0].state_name)[0]) == "turbulent wake"
+    (line,) = _descent_state_warning(w.loads, "log.csv")
+    assert line.startswith("1 of 1 samples of log.csv (100.0%)")
+
+
+_ESC = [("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("uint8_t", "esc_online_flags"), ("esc_report[4]", "esc")]
+
+
+def test_a_zero_moment_coefficient_gives_no_rotor_layout():
+    from propmap.io.ulog_motors import _px4_rotor_layout
+
+    params = {f"CA_ROTOR{i}_{k}": v for i in range(4) for k, v in (("PX", 0.1), ("PY", 0.1), ("KM", 0.05))}
+    assert _px4_rotor_layout(params, 4).shape == (4, 3)
+    assert _px4_rotor_layout({**params, "CA_ROTOR2_KM": 0.0}, 4) is None
+    assert _px4_rotor_layout({**params, "SYS_CTRL_ALLOC": 0}, 4) is None
+    assert _px4_rotor_layout({**params, "CA_ROTOR_COUNT": 3}, 4) is None
+
+
+@pytest.mark.parametrize("hz, acc_every, sc_every, said", [(250.0, 4, 1, False), (120.0, 3, 2, False),
+                                                         (100.0, 8, 1, True)])
+def test_slow_vehicle_acceleration_is_said_below_50_hz_and_half_the_sensors_rate(tmp_path, hz, acc_every, sc_every,
+                                                                                said):
+    """vehicle_acceleration at 62.5 Hz beside a 250 Hz sensor_combined (not below 50 Hz), at 40 Hz beside a 60 Hz one
+    (not below half its rate): nothing said; at 12.5 Hz beside 100 Hz, said."""
+    import warnings
+
+    from propmap.io.flightlog import read_flight_log
+    from ulog_writer import write_ulog
+
+    t, topics = _px4_hover(n=480, hz=hz)
+    topics["sensor_combined"] = ([("uint64_t", "timestamp"), ("float[3]", "accelerometer_m_s2")],
+                                 [(ti, 0.0, 0.0, -9.80665) for ti in t[::sc_every]])
+    fields, rows = topics["vehicle_acceleration"]
+    topics["vehicle_acceleration"] = (fields, rows[::acc_every])
+    topics["esc_status"] = (_ESC[:2] + _ESC[3:], [(ti, 4, *sum(([ti, 5400] for _ in range(4)), [])) for ti in t])
+    write_ulog(tmp_path / "a.ulg", topics, {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")]})
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        read_flight_log(tmp_path / "a.ulg")
+    assert any("vehicle_acceleration's messages, logged at" in str(w.message) for w in caught) == said
+
+
+def test_an_offline_escs_bit_is_its_entrys_not_its_motors(tmp_path):
+    """esc_online_flags' bit k is esc[k]'s: with actuator_function naming esc[0] Motor4, esc[0]'s dropout is left out
+    of motor 4's speed (the 4th column), said of esc[0]."""
+    from propmap.io.flightlog import read_flight_log
+    from ulog_writer import write_ulog
+
+    t, topics = _px4_hover()
+    fn, off = [104, 101, 102, 103], range(200, 205)
+    rows = [(ti, 4, 0b1110 if i in off else 0b1111,
+             *sum(([ti, 0 if (i in off and k == 0) else 5000 + 100 * (fn[k] - 100), fn[k]] for k in range(4)), []))
+            for i, ti in enumerate(t)]
+    topics["esc_status"] = (_ESC, rows)
+    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm"), ("uint8_t", "actuator_function")]}
+    write_ulog(tmp_path / "f.ulg", topics, nested)
+    with pytest.warns(UserWarning, match=r"5 reading\(s\) of an ESC marked offline \(esc_online_flags; the most, 5, of "
+                                         r"esc\[0\]\)"):
+        log = read_flight_log(tmp_path / "f.ulg")
+    np.testing.assert_allclose(log.rotor_omega[100] * 30 / math.pi, [5100, 5200, 5300, 5400], rtol=1e-9)
+    np.testing.assert_allclose(log.rotor_omega[:, 3] * 30 / math.pi, 5400, rtol=1e-9)
+
+
+def test_uavcan_order_where_actuator_function_is_logged_as_0_and_other_outputs_have_functions(tmp_path):
+    """PX4 v1.14+ logs esc[k].actuator_function, which the UAVCAN driver leaves 0: UAVCAN_EC_FUNCn order the entries
+    still; a PWM_MAIN_FUNCn of the same motors (another output group) does not; UAVCAN_ENABLE below 3 (no UAVCAN
+    ESCs) leaves the entry order."""
+    from propmap.io.flightlog import read_flight_log
+    from ulog_writer import write_ulog
+
+    t, topics = _px4_hover()
+    fn = [103, 101, 104, 102]
+    topics["esc_status"] = (_ESC[:2] + _ESC[3:],
+                            [(ti, 4, *sum(([ti, 5000 + 100 * (fn[k] - 100), 0] for k in range(4)), [])) for ti in t])
+    nested = {"esc_report": [("uint64_t", "timestamp"), ("int32_t", "esc_rpm"), ("uint8_t", "actuator_function")]}
+    params = {**{f"PWM_MAIN_FUNC{k + 1}": 101 + k for k in range(4)},
+              **{f"UAVCAN_EC_FUNC{k + 1}": fn[k] for k in range(4)}}
+    write_ulog(tmp_path / "can.ulg", topics, nested, params=params)
+    log = read_flight_log(tmp_path / "can.ulg", n_motors=4)
+    np.testing.assert_allclose(log.rotor_omega[0] * 30 / math.pi, [5100, 5200, 5300, 5400], rtol=1e-12)
+    write_ulog(tmp_path / "off.ulg", topics, nested, params={**params, "UAVCAN_ENABLE": 2})
+    assert "in entry order" in read_flight_log(tmp_path / "off.ulg", n_motors=4).motor_order
+
+
+def _pe0_with(tmp_path, edit):
+    name, lines = _pe0_lines()
+    lines = edit(list(lines))
+    path = tmp_path / name
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def _station_rows(lines):
+    return [i for i, ln in enumerate(lines) if len(ln.split()) >= 13 and ln.split()[0][0].isdigit()]
+
+
+def test_a_station_at_hubtra_is_kept_and_hubtra_leaving_one_station_keeps_all(tmp_path):
+    """A first station at HUBTRA is the blade's; a HUBTRA beyond all but the last station is no hub transition of this
+    table (every row kept, nothing said)."""
+    import warnings
+
+    def at_hubtra(lines):
+        hubtra = next(re.search(r"HUBTRA:\s*(\S+)", ln).group(1) for ln in lines if "HUBTRA:" in ln)
+        i = _station_rows(lines)[0]
+        lines[i] = "  ".join([hubtra, *lines[i].split()[1:]])
+        return lines
+
+    def late_hubtra(lines):
+        last = float(lines[_station_rows(lines)[-1]].split()[0])
+        return [re.sub(r"HUBTRA:\s*\S+", f"HUBTRA:  {last - 0.01:.4f}", ln) for ln in lines]
+
+    for edit in (at_hubtra, late_hubtra):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            prop = pm.read_geometry(_pe0_with(tmp_path, edit))
+        assert prop.r.size == pm.load_propeller("apce_8x6").r.size
+
+
+def test_a_bad_twist_after_hub_stations_names_its_own_line(tmp_path):
+    """The rows left out inside HUBTRA leave the line numbers of the others as they are."""
+    def edit(lines):
+        rows = _station_rows(lines)
+        hub = []
+        for station in (0.30, 0.60):
+            parts = lines[rows[0]].split()
+            parts[0], parts[7] = f"{station:.4f}", "0.0000"
+            hub.append("  ".join(parts))
+        parts = lines[rows[5]].split()
+        parts[7] = "95.0000"
+        lines[rows[5]] = "  ".join(parts)
+        return [*lines[:rows[0]], *hub, *lines[rows[0]:]]
+
+    _, lines = _pe0_lines()
+    bad_line = _station_rows(lines)[5] + 1 + 2  # (1-based, after the 2 hub rows put before it)
+    with (pytest.warns(UserWarning, match="inside HUBTRA"),
+          pytest.raises(Exception, match=rf", line {bad_line}: TWIST = 95 deg")):
+        pm.read_geometry(_pe0_with(tmp_path, edit))
+
+
+def test_a_pe0_table_of_15_columns_is_read_by_its_header(tmp_path):
+    def edit(lines):
+        head = next(i for i, ln in enumerate(lines) if "STATION" in ln.split() and "TWIST" in ln.split())
+        for i in range(len(lines)):
+            parts = lines[i].split()
+            if i == head:
+                lines[i] = "  ".join([*parts[:6], "RAKE(Z)", "SKEW", *parts[6:]])
+            elif i > head and len(parts) == 13 and parts[0][0].isdigit():
+                lines[i] = "  ".join([*parts[:6], "0.0000", "0.0000", *parts[6:]])
+        return lines
+
+    mine = pm.read_geometry(_pe0_with(tmp_path, edit))
+    np.testing.assert_allclose(mine.theta, pm.load_propeller("apce_8x6").theta, rtol=1e-12)
+
+
+def test_trim_prints_the_geometrys_blade_angle_and_solidity(capsys):
+    import json
+
+    assert main(["trim", "apce_8x6", "--thrust", "2", "--rpm", "6000"]) == 0
+    assert "2 blades, D = 0.2032 m, blade angle at 0.75 R 17.66 deg, solidity 0.0861; air:" in capsys.readouterr().out
+    assert main(["trim", "apce_8x6", "--thrust", "2", "--rpm", "6000", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["theta75_deg"] == pytest.approx(17.66, abs=0.01) and d["solidity"] == pytest.approx(0.0861, abs=5e-5)

@@ -327,12 +327,17 @@ def split_header(name: str) -> tuple[str, str | None]:
         return low, None
     if "," in low and low.rsplit(",", 1)[0].strip() in _PARSED:  # 'Thrust, N', 'Torque, N*m' (a unit after a comma)
         return low.rsplit(",", 1)[0].strip(), name.rsplit(",", 1)[1].strip()
-    if " - " in low and low.rsplit(" - ", 1)[0].strip() in _PARSED:  # 'Thrust - gf', 'Torque - N*m' (a stand's log:
-        # refused as 'lines above the header?', an export audit, 2026-12-02); only a unit of the name's quantity after
-        # it ('Thrust - filtered', 'Airspeed - pitot' are other columns, read as nothing: a review)
+    if " - " in low:  # 'Thrust - gf', 'Torque - N*m' (a stand's log: refused as 'lines above the header?', an export
+        # audit, 2026-12-02); only a unit after it, of the name's quantity where propmap reads the name ('Thrust -
+        # filtered', 'Airspeed - pitot' are other columns, read as nothing: a review), of any quantity where it does
+        # not ('Wind - m/s' is checked as an unread airspeed, as 'Wind (m/s)' is: a mutation audit)
         base, unit = low.rsplit(" - ", 1)[0].strip(), name.rsplit(" - ", 1)[1].strip()
-        kind = _PARSED[base][1]
-        if kind is not None and _token(unit) in UNITS[kind] or _PARSED[base][0] == "esc" and _token(unit) in _ESC_UNITS:
+        tok = _token(unit)
+        if base not in _PARSED:
+            if any(tok in u for u in UNITS.values()):
+                return base, unit
+        elif _PARSED[base][1] is not None and tok in UNITS[_PARSED[base][1]] or (
+                _PARSED[base][0] == "esc" and tok in _ESC_UNITS):
             return base, unit
     if " " in low:  # 'Thrust g', 'Thrust in g' (a known unit after a blank: read as a column of nothing, a user audit)
         base, unit = low.rsplit(" ", 1)
