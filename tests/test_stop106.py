@@ -890,3 +890,20 @@ def test_trim_prints_the_geometrys_blade_angle_and_solidity(capsys):
     assert main(["trim", "apce_8x6", "--thrust", "2", "--rpm", "6000", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
     assert d["theta75_deg"] == pytest.approx(17.66, abs=0.01) and d["solidity"] == pytest.approx(0.0861, abs=5e-5)
+
+
+def test_a_px4_simulation_logs_esc_rpm_in_rad_s_is_named_in_the_refusal():
+    """PX4's Gazebo bridge writes esc_rpm in rad/s (GZMixingInterfaceESC.cpp): such a log's speeds, read as rpm, are
+    9.55 times too slow, and it was refused as an implausible speed without that cause; a ulog 3 times too slow is
+    not said to be in rad/s."""
+    from types import SimpleNamespace
+
+    from propmap.identify.flight_samples import _check_hover
+
+    veh = pm.read_vehicle(EXAMPLES / "quadrotor.toml")
+    log = SimpleNamespace(name="sitl.ulg", format="ulog")
+    with pytest.raises(ValueError, match=r"and rpm, not rad/s \(PX4's Gazebo simulation logs esc_rpm in rad/s\)"):
+        _check_hover(log, np.full((50, 4), 1000.0 * math.pi / 30), veh, 1000.0)
+    with pytest.raises(ValueError) as refused:
+        _check_hover(log, np.full((50, 4), 1000.0 / 3), veh, 1000.0)
+    assert "rad/s (PX4's Gazebo" not in str(refused.value)
