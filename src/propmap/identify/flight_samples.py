@@ -12,6 +12,7 @@ import numpy as np
 
 from ..core._numbers import checked
 from ..core.air import G0
+from ..core.units import RPM
 from ..io.flightlog import FlightLog
 from ..io.flightlog_checks import OMEGA_STOPPED
 from ..vehicle import Vehicle
@@ -492,15 +493,13 @@ def _check_hover(log: FlightLog, omega, vehicle: Vehicle, hover: float) -> None:
                  # (PX4's Gazebo bridge writes esc_rpm in rad/s: GZMixingInterfaceESC.cpp; refused without the cause,
                  # a PX4 audit, 2026-12-02)
                  + (", and rpm, not rad/s (PX4's Gazebo simulation logs esc_rpm in rad/s)"
-                    if 0.8 / RPM_PER_RAD_S < median / hover < 1.25 / RPM_PER_RAD_S else ""))
+                    if 0.8 * RPM < median / hover < 1.25 * RPM else ""))  # (rad/s read as rpm: RPM times too slow)
         raise ValueError(f"{log.name}: the rotors' rms speed is {median:.4g} rad/s in the median and {high:.4g} in "
                          f"its 95th percentile, {median / hover:.2g} and {high / hover:.2g} times the vehicle's hover "
                          f"speed {hover:.4g} rad/s (its mass {vehicle.mass:g} kg, the generic set): is the mass in kg "
                          f"and {units}? (docs/flight.md)")
 
 
-#: rpm per rad/s (30 / pi): a speed in rad/s read as rpm comes out this many times too slow
-RPM_PER_RAD_S = 30.0 / math.pi
 #: the rotor speeds [rad/s] at which _hover_speed evaluates the static thrust, one batch (steps of 16%)
 HOVER_GRID = np.geomspace(10.0, 1e5, 64)
 
