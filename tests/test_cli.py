@@ -137,8 +137,8 @@ def test_validate_json_and_figure(capsys, tmp_path):
         (["loads", "/", "--rpm", "8000"], "'/' is a folder"),
         (["loads", "", "--rpm", "8000"], "the propeller is empty"),
         (["loads", "apce_8x6.txt", "--rpm", "8000"], "did you mean the catalogue's apce_8x6"),
-        # a bare size: every family's propeller of that size (none was suggested: a user-level audit, 2026-11-28)
-        (["loads", "8x6", "--rpm", "8000"], "did you mean apce_8x6, apcsf_8x6, apcsp_8x6?"),
+        # (a bare size, 8x6, is a nominal blade since 2026-12-02, naming the catalogue's propellers of that size:
+        # tests/test_nominal_geometry.py)
         (["loads", "apce_8x6", "--rpm", "8000", "--params", "nope"], "--params"),
         (["loads", "apce_8x6"], "--rpm"),
         (["loads", "apce_8x6", "--rpm", "abc"], "abc"),

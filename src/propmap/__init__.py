@@ -33,6 +33,7 @@ _EXPORTS = {
     "OmegaTrimResult": "core.trim",
     "torque_change_at_constant_thrust": "core.torque_change", "section_preset": "io.param_sets",
     "rotor_like": "core.geometry", "example_file": "io.catalogue", "example_files": "io.catalogue",
+    "nominal_propeller": "io.nominal_geometry",
 }
 
 __all__ = [*_EXPORTS, "__version__"]

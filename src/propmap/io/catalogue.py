@@ -21,7 +21,7 @@ from .geometry_files import read_apc_pe0, read_geometry, read_uiuc_geometry
 from .readers import StaticRun, Sweep, read_uiuc_static, read_uiuc_sweep
 
 __all__ = ["CatalogueEntry", "catalogue", "catalogue_source", "example_file", "example_files", "get_entry",
-           "load_propeller", "near", "near_names", "resolve_propeller"]
+           "load_propeller", "near", "near_names", "resolve_propeller", "catalogue_sizes"]
 
 UIUC_CITATION = ("UIUC Propeller Data Site vol. 1, Brandt & Selig, AIAA 2011-1255")
 UIUC_V2_CITATION = ("UIUC Propeller Data Site vol. 2, Deters, Ananda & Selig, AIAA 2014-2151")
@@ -341,16 +341,33 @@ def _load_propeller(name: str) -> Propeller:
     return prop
 
 
+def catalogue_sizes() -> dict:
+    """Each catalogue propeller's size as its name gives it.
+
+    Returns
+    -------
+    dict
+        name -> ``(diameter_in, pitch_in, n_blades)`` (``pitch_in`` None where the name gives
+        no pitch).
+    """
+    return {n: (e.diameter_in, e.pitch_in, e.n_blades) for n, e in _catalogue().items()}
+
+
 def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: int | None = None) -> Propeller:
-    """A catalogue name or a path to a geometry file (UIUC ``r/R c/R beta`` or APC PE0).
+    """A catalogue name, a path to a geometry file (UIUC ``r/R c/R beta``, APC PE0, QPROP) or a
+    size designation (``"9x4.5"``, ``"5x4.5x3"``: a nominal blade).
 
     Parameters
     ----------
     spec : str or os.PathLike
-        A catalogue name (``propmap props``) or the path of a geometry file.
+        A catalogue name (``propmap props``), the path of a geometry file, or, where no file
+        of that name exists, a size designation ``DxP`` or ``DxPxB`` in inches
+        (:func:`propmap.io.nominal_geometry.propeller_from_size`: the helix of the pitch on
+        the catalogue's median chord, said in a warning).
     diameter_in, n_blades
-        For a geometry file, as :func:`propmap.io.geometry_files.read_geometry`; a
-        catalogue propeller's own are used.
+        For a geometry file, as :func:`propmap.io.geometry_files.read_geometry`; for a size
+        designation, they must agree with it (``n_blades`` the blade count where it has no
+        third figure, default 2); a catalogue propeller's own are used.
 
     Returns
     -------
@@ -364,6 +381,9 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
         unknown name), with close catalogue names suggested.
     GeometryFileError
         The file is malformed.
+    ValueError
+        A size designation whose figures are out of range or unlike ``diameter_in`` /
+        ``n_blades``.
     TypeError
         ``spec`` neither a str nor an os.PathLike.
 
@@ -371,7 +391,8 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
     -----
     UserWarning
         As the geometry readers (e.g. stations stopping short of the tip); a catalogue name
-        that is also a file in the working folder (the catalogue's propeller is used).
+        that is also a file in the working folder (the catalogue's propeller is used); a
+        nominal blade built from a size designation.
     """
     if isinstance(spec, os.PathLike):  # (a pathlib.Path met "'PosixPath' object has no attribute 'strip'")
         return read_geometry(spec, diameter_in=diameter_in, n_blades=n_blades)
@@ -398,6 +419,12 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
         raise KeyError(f"{shown} is a folder, not a catalogue name or a geometry file")
     if kind == "other":
         raise KeyError(f"{shown} is not a regular file")
+    from .nominal_geometry import propeller_from_size
+
+    nominal = propeller_from_size(spec, diameter_in=diameter_in, n_blades=n_blades,  # ("9x4.5": no geometry file)
+                                  catalogue_sizes=catalogue_sizes())
+    if nominal is not None:
+        return nominal
     if len(path.parts) > 1 or path.suffix.lower() in (".txt", ".pe0", ".dat", ".csv"):  # a path: no file there
         import difflib
 

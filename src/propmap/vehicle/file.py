@@ -238,7 +238,8 @@ def _own_params(spec, folder: Path, name: str, data: dict, itself: Path):
 
 def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
                n_blades: int | None = None) -> Propeller:
-    """The rotor's propeller: a file relative to ``folder`` (or absolute), else a catalogue name."""
+    """The rotor's propeller: a file relative to ``folder`` (or absolute), else a catalogue name, else a size
+    designation (``"5x4.5x3"``, inches: a nominal blade)."""
     from ..io.catalogue import catalogue, load_propeller
     from ..io.geometry_files import read_geometry
 
@@ -268,6 +269,18 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
             raise VehicleFileError(f"{where}: blades and diameter_m are for geometry files; {spec!r} is a catalogue "
                                    "propeller, whose geometry states them")
         return load_propeller(spec)
+    from ..io.nominal_geometry import parse_size, propeller_from_size
+
+    if parse_size(spec) is not None:  # ("5x4.5x3": a nominal blade, said in a warning)
+        if diameter_in is not None:
+            raise VehicleFileError(f"{where}: diameter_m is for geometry files; the size designation {spec.strip()!r} "
+                                   "gives the diameter")
+        try:
+            from ..io.catalogue import catalogue_sizes
+
+            return propeller_from_size(spec, n_blades=n_blades, catalogue_sizes=catalogue_sizes())
+        except ValueError as exc:
+            raise VehicleFileError(f"{where}: propeller: {str(exc).replace(': n_blades = ', ': blades = ')}") from None
     near = difflib.get_close_matches(spec, list(catalogue()), n=3)
     hint = f"; did you mean {', '.join(near)}?" if near else " ('propmap props' lists the catalogue)"
     shown = short_path(folder / spec, 300)
