@@ -12,7 +12,7 @@ designation ``D x P`` in inches. :func:`nominal_propeller` builds a blade for th
   median r/R of 0.15);
 * the blade angle is the helix of the nominal pitch, theta = atan(P / (2 pi r)): the geometric
   pitch of a blade whose every station advances P per turn. Against the catalogue's measured
-  blades, the helix of the pitch in the name is within -5 to +2.4 deg of the measured angle at
+  blades, the helix of the pitch in the name is within -5.2 to +2.4 deg of the measured angle at
   0.75 R (family medians; the APC electric, sport and slow-flyer families +0.2, +1.1 and -0.8
   deg), which is what makes a name a usable geometry.
 
