@@ -144,6 +144,9 @@ def test_the_command_line_takes_a_size_for_loads_and_fits(tmp_path, capsys):
     assert one_line_error(code, err, "PROP: 5x4.5x3: --blades 2, where the size designation's third figure says 3")
     code, _, err = run(capsys, "loads", "9x4.5", "--rpm", "6000", "--diameter-in", "10")
     assert one_line_error(code, err, "PROP: 9x4.5: --diameter-in 10 in")
+    code, _, err = run(capsys, "loads", "nosuchprop", "--rpm", "6000")
+    assert one_line_error(code, err, "unknown propeller 'nosuchprop': not in the catalogue ('propmap props' lists "
+                          "it), nor a file; a propeller without a geometry file is given by its size, 9x4.5")
     code, _, err = run(capsys, "loads", "0x2", "--rpm", "6000")
     assert one_line_error(code, err, "D must be in [0.5, 100] in, got 0")
     # a thrust stand's static run of a propeller without a geometry file: fitted, then used by name
@@ -154,6 +157,8 @@ def test_the_command_line_takes_a_size_for_loads_and_fits(tmp_path, capsys):
     loads = pm.rotor_loads(stand, truth, rpm * RPM, np.zeros(rpm.size), np.zeros(rpm.size))
     rows = "\n".join(f"{n},{t:.6f},{q:.7f}" for n, t, q in zip(rpm, loads.thrust, loads.torque))
     (tmp_path / "stand.csv").write_text("rpm,thrust_N,torque_Nm\n" + rows + "\n")
+    code, _, err = run(capsys, "fit", "loads", tmp_path / "stand.csv", "--out", tmp_path / "p.toml")
+    assert one_line_error(code, err, "or, without a geometry file, its size, --prop 9x4.5 (D x P in inches")
     code, _, err = run(capsys, "fit", "loads", tmp_path / "stand.csv", "--prop", "9x4.5", "--out", tmp_path / "p.toml")
     assert code == 0, err
     code, out, err = run(capsys, "loads", "9x4.5", "--rpm", "7000", "--params", tmp_path / "p.toml", "--json")

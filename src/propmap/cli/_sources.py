@@ -134,7 +134,8 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
                          + hint)
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller, as --prop NAME or --prop GEOMETRY_FILE (a "
-                         "catalogue name or geometry file; one among the SOURCEs is read as data)")
+                         "catalogue name or geometry file; one among the SOURCEs is read as data), or, without a "
+                         "geometry file, its size, --prop 9x4.5 (D x P in inches: a nominal blade)")
     refuse_copies(sources, "SOURCE", "its data would count twice")
     other = [s for s in sources if not looks_like_uiuc(s)]
     # (UIUC data files with a UIUC geometry file: what their names give is taken; the file's format asked once)

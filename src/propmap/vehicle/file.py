@@ -285,7 +285,8 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
     hint = f"; did you mean {', '.join(near)}?" if near else " ('propmap props' lists the catalogue)"
     shown = short_path(folder / spec, 300)
     raise VehicleFileError(f"{where}: propeller {short_path(spec, quote=True)} is neither a file ({shown}: a relative "
-                           f"path is taken from the vehicle file's folder) nor a catalogue name{hint}")
+                           f"path is taken from the vehicle file's folder) nor a catalogue name, nor a size such as "
+                           f"5x4.5 (D x P in inches: a nominal blade){hint}")
 
 
 #: how a bundled example parameter file's name ends (an example vehicle's own set), which is not a vehicle
