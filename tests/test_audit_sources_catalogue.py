@@ -270,7 +270,7 @@ def test_a_blank_propeller_is_said_to_be_empty():
     """A propeller of blanks only is said to be empty, not an unknown catalogue name."""
     from propmap.io.catalogue import resolve_propeller
 
-    with pytest.raises(KeyError, match="the propeller is empty: give a catalogue name or a geometry file"):
+    with pytest.raises(KeyError, match="the propeller is empty: give a catalogue name, a geometry file or a size"):
         resolve_propeller("  ")
 
 

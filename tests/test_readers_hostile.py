@@ -361,7 +361,7 @@ def test_toml_deep_nesting_and_huge_integers(tmp_path):
     (("axis = [0, 0, 1]", "axis = [0, 0, 0]"), "axis must be non-zero"),
     (("axis = [0, 0, 1]", "axis = [nan, 0, 1]"), "axis must be 3 finite numbers"),
     (("spin = 'cw'", "spin = true"), "spin must be 'cw' or 'ccw', got True"),
-    (("propeller = 'apce_8x6'", "propeller = 5"), "propeller must be a geometry file or a catalogue name"),
+    (("propeller = 'apce_8x6'", "propeller = 5"), "propeller must be a geometry file, a catalogue name or a size"),
     (("propeller = 'apce_8x6'", "propeller = 'apce_8x7'"), "nominal blade\\); did you mean apce_8x8, apce_8x6"),
     (("propeller = 'apce_8x6'", "propeller = 'apce_8x6'\ndiameter_in = 8"), "rotor 1: unknown key\\(s\\) diameter_in"),
 ])

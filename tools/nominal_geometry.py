@@ -42,6 +42,21 @@ def chord_shape(names) -> np.ndarray:
     return np.nanmedian(np.array(rows), axis=0)
 
 
+def twist_offset(names) -> np.ndarray:
+    """Median over the catalogue geometries ``names`` whose name gives a pitch of the measured blade angle less the
+    helix of that pitch, at R_OVER_R [rad] (an experiment: ``validate --twist``)."""
+    rows = []
+    for name in names:
+        e = catalogue()[name]
+        if e.pitch_in is None:
+            continue
+        p = pm.load_propeller(name)
+        x = np.asarray(R_OVER_R)
+        helix = np.arctan(e.pitch_in * 0.0254 / (2 * np.pi * x * p.radius))
+        rows.append(np.interp(x, p.r / p.radius, p.theta, left=np.nan, right=np.nan) - helix)
+    return np.nanmedian(np.array(rows), axis=0)
+
+
 def shape() -> None:
     names = list(catalogue())
     c = chord_shape(names)
@@ -70,7 +85,7 @@ def _fold_training(name: str) -> set:
     return set(catalogue()) - {name}
 
 
-def validate(out: Path | None) -> None:
+def validate(out: Path | None, twist: bool = False) -> None:
     rows = []
     for name, e in catalogue().items():
         if e.pitch_in is None or not (e.static_files and len(e.sweep_files) >= 2):
@@ -78,6 +93,10 @@ def validate(out: Path | None) -> None:
         own = pm.load_propeller(name)
         shape_without = chord_shape(sorted(_fold_training(name)))
         nominal = nominal_propeller(own.diameter, e.pitch_in * 0.0254, e.n_blades, chord_over_r=shape_without)
+        if twist:
+            from dataclasses import replace
+
+            nominal = replace(nominal, theta=nominal.theta + twist_offset(sorted(_fold_training(name))))
         data = loads_from_catalogue(e, own.diameter)
         generic, pop = generic_without(name)[0], population(without=name)
         row = {"name": name, "volume": e.volume, "family": e.family}
@@ -114,5 +133,8 @@ if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("what", choices=("shape", "validate"))
     parser.add_argument("--out", type=Path, default=None, help="validate: a CSV of every propeller's figures")
+    parser.add_argument("--twist", action="store_true",
+                        help="validate: the nominal blade angle corrected by the training geometries' median "
+                             "difference from the helix, station by station (an experiment, not adopted)")
     args = parser.parse_args()
-    shape() if args.what == "shape" else validate(args.out)
+    shape() if args.what == "shape" else validate(args.out, args.twist)

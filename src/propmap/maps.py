@@ -411,7 +411,7 @@ def _dataset(result, loads, om, V, b, propeller, params, air, discretization, pa
         "Conventions": "CF-1.8",
     }
     # the model's own error against measurements with this set, beside the map's against the model
-    unc = model_uncertainty(params_label or getattr(params, "label", ""))
+    unc = model_uncertainty(params_label or getattr(params, "label", ""), propeller)
     attrs["model_uncertainty_axial"] = unc["axial"]
     attrs["model_uncertainty_off_axis"] = unc["off_axis"]
     return xr.Dataset(data, coords=coords, attrs=attrs)

@@ -106,8 +106,14 @@ def given(ctx: click.Context, *params: str) -> list[str]:
     return out
 
 
+#: the warnings :func:`warn` printed in this command (cli.main clears it; a library warning of the same text is not
+#: printed again at the command's end: a nominal blade's, said by PROP and by a vehicle file, was said twice)
+SAID: set = set()
+
+
 def warn(message: str) -> None:
-    """A one-line warning on stderr (the run goes on)."""
+    """A one-line warning on stderr (the run goes on); recorded in :data:`SAID`."""
+    SAID.add(str(message))
     click.echo(f"propmap: warning: {message}", err=True)
 
 
@@ -127,7 +133,7 @@ def warn_incidence_radians(incidence_deg: float, airspeed: float) -> None:
 
 
 def load_prop(spec: str, diameter_in: float | None, blades: int | None, option: str = "PROP"):
-    """The Propeller named by PROP (catalogue name or geometry file), with the file options.
+    """The Propeller named by PROP (catalogue name, geometry file or size designation), with the file options.
 
     ``option`` names the argument that gave ``spec`` in the errors: ``PROP``, or ``--prop`` where
     the command's geometry is an option (``fit loads``, ``validate SOURCE...``).

@@ -303,7 +303,9 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
                                               "to hold out (default: none).")
 @click.option("--quantities", default=None, help="Comma-separated subset of thrust,drag,torque,rolling_moment to fit "
                                                  "(default: all measured).")
-@click.option("--prop", "prop_spec", default=None, help="Propeller (catalogue name or geometry file) of file SOURCEs.")
+@click.option("--prop", "prop_spec", default=None,
+              help="Propeller (catalogue name, geometry file, or a size 9x4.5 in inches: a nominal blade) of file "
+                   "SOURCEs.")
 @with_prop_options
 @click.option("--base", "base_spec", default=None,
               help="The model, start and constants not fitted: default 'generic' (cambered, fitted to the "

@@ -203,7 +203,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 @with_air_options
 def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, prop_choice,
           air_choice):
-    """Thrust, rotor drag, torque and power of PROP (catalogue name or geometry file).
+    """Thrust, rotor drag, torque and power of PROP (catalogue name, geometry file, or a size
+    9x4.5 or 5x4.5x3 in inches: a nominal blade, docs/cli.md).
 
     Outputs are SI: N, N m, W; CT, CQ and CP in the propeller convention; in descent the
     mean induced inflow over the hover induced velocity at that thrust (v_i_over_v_h),

@@ -15,6 +15,7 @@ import click
 from ..core.air import TipMachWarning
 from ..io.coverage import CoverageWarning
 from .. import __version__
+from ._common import SAID
 from .demo import demo
 from .export_sim import export_sim_command
 from .fit import fit
@@ -174,6 +175,7 @@ def _main(argv: list[str] | None) -> int:
     except ValueError:  # not the main thread
         pass
     caught: list = []
+    SAID.clear()
     said: list[str] = []  # the error line, printed after the warnings (the last line is the error)
     try:
         with warnings.catch_warnings(record=True) as caught:
@@ -229,7 +231,7 @@ def _main(argv: list[str] | None) -> int:
         _redelivery.clear()
         for s, handler in previous.items():
             signal.signal(s, handler)
-        seen = set()
+        seen = set(SAID)  # (those warn() printed: a library warning of the same text is not said twice)
         ours = [w for w in caught if issubclass(w.category, UserWarning) and str(w.filename).startswith(_PACKAGE_DIR)]
         for w in ours:
             if str(w.message) in seen:

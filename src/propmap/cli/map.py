@@ -254,7 +254,7 @@ def _check_options(ctx, prop, out, fmt, c_header: CHeaderChoice, check_points, a
     if only is not None and not all_props:
         raise InputError("--props applies to --all")
     if not all_props and not prop:
-        raise InputError("give PROP (catalogue name or geometry file), --all, or --check MAP.nc")
+        raise InputError("give PROP (catalogue name, geometry file or a size such as 9x4.5), --all, or --check MAP.nc")
     if out is None:
         raise InputError("--out is required (the map file)")
     if all_props:

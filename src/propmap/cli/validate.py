@@ -36,7 +36,8 @@ def print_table(v) -> None:
 @click.option("--all", "all_props", is_flag=True,
               help="Cross-validate every catalogue propeller with measurements (about 2 minutes on 2 cores).")
 @click.option("--prop", "prop_spec", default=None,
-              help="The propeller (catalogue name or geometry file) of SOURCE files.")
+              help="The propeller (catalogue name, geometry file, or a size 9x4.5 in inches: a nominal blade) of "
+                   "SOURCE files.")
 @with_prop_options
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP + " Not with --all.")
 @click.option("--rpm-source", type=click.Choice(["optical", "electrical"]), default=None,

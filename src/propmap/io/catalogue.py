@@ -342,13 +342,14 @@ def _load_propeller(name: str) -> Propeller:
 
 
 def catalogue_sizes() -> dict:
-    """Each catalogue propeller's size as its name gives it.
+    """Each catalogue propeller's size as its entry gives it (:class:`CatalogueEntry`).
 
     Returns
     -------
     dict
-        name -> ``(diameter_in, pitch_in, n_blades)`` (``pitch_in`` None where the name gives
-        no pitch).
+        name -> ``(diameter_in, pitch_in, n_blades)``: the nominal sizes of the names, in
+        inches for the millimetre-named families too; ``pitch_in`` None where the name gives
+        no pitch, the helix of the blade angle at 0.75 R for vol. 2's NR640 blades.
     """
     return {n: (e.diameter_in, e.pitch_in, e.n_blades) for n, e in _catalogue().items()}
 
@@ -407,7 +408,7 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
         return load_propeller(spec)
     shown = short_path(spec, 120, quote=True)
     if not spec.strip():
-        raise KeyError("the propeller is empty: give a catalogue name or a geometry file")
+        raise KeyError("the propeller is empty: give a catalogue name, a geometry file or a size (9x4.5)")
     path = Path(spec)
     try:  # (a name past the system's limit met "OSError: File name too long", an API audit)
         kind = "file" if path.is_file() else "folder" if path.is_dir() else "other" if path.exists() else None

@@ -12,8 +12,8 @@ designation ``D x P`` in inches. :func:`nominal_propeller` builds a blade for th
   median r/R of 0.15);
 * the blade angle is the helix of the nominal pitch, theta = atan(P / (2 pi r)): the geometric
   pitch of a blade whose every station advances P per turn. Against the catalogue's measured
-  blades, the helix of the pitch in the name is within -5.2 to +2.4 deg of the measured angle at
-  0.75 R (family medians; the APC electric, sport and slow-flyer families +0.2, +1.1 and -0.8
+  blades, the measured angle at 0.75 R less the helix of the pitch in the name is -5.2 to +2.4
+  deg (family medians; the APC electric, sport and slow-flyer families +0.2, +1.1 and -0.8
   deg), which is what makes a name a usable geometry.
 
 How well such a blade predicts, blind and fitted, against the same propellers' own geometry,
@@ -29,7 +29,8 @@ import numpy as np
 
 from ..core.geometry import INCH, Propeller
 
-__all__ = ["R_OVER_R", "CHORD_OVER_R", "NOMINAL_SOURCE", "nominal_propeller", "parse_size", "propeller_from_size"]
+__all__ = ["R_OVER_R", "CHORD_OVER_R", "NOMINAL_SOURCE", "NOMINAL_COST", "DESIGNATION_MAX_IN", "nominal_propeller",
+           "parse_size", "propeller_from_size"]
 
 #: stations of the nominal blade [r/R]
 R_OVER_R = (0.15, 0.20, 0.25, 0.30, 0.35, 0.40, 0.45, 0.50, 0.55, 0.60, 0.65, 0.70, 0.75, 0.80, 0.85, 0.90, 0.95,
@@ -42,6 +43,9 @@ CHORD_OVER_R = (0.154, 0.150, 0.161, 0.171, 0.179, 0.180, 0.180, 0.179, 0.177, 0
 NOMINAL_SOURCE = ("nominal blade: the helix of the named pitch on the median chord of the UIUC Propeller Data Site "
                   "vol. 1 and 2 and APC PE0 geometries (propmap.io.nominal_geometry)")
 
+#: the largest diameter a size designation may give [in]: the catalogue's blades, whose median chord the nominal
+#: blade takes, are 1.8-19 in; a designation beyond this is more likely in millimetres (``100x80``) than inches
+DESIGNATION_MAX_IN = 40.0
 #: a size designation ``D x P`` in inches, with an optional third figure, the blade count (``5x4.5x3``)
 _SIZE_RE = re.compile(r"\s*(?P<D>\d+(?:\.\d+)?)\s*[xX]\s*(?P<P>\d+(?:\.\d+)?)(?:\s*[xX]\s*(?P<B>\d+))?\s*",
                       re.ASCII)
@@ -80,7 +84,7 @@ def nominal_propeller(diameter: float, pitch: float, n_blades: int = 2, *, name:
     diameter : float
         Tip diameter D [m], in [0.5, 100] in (0.0127-2.54 m).
     pitch : float
-        Nominal pitch P [m], > 0 and at most 3 D (a blade angle of at most 51.5 deg at 0.75 R).
+        Nominal pitch P [m], > 0 and at most 3 D (a blade angle of at most 51.85 deg at 0.75 R).
     n_blades : int, optional
         Blade count, in [1, 20] (default 2).
     name : str, optional
@@ -142,7 +146,8 @@ def propeller_from_size(spec: str, *, diameter_in: float | None = None, n_blades
     Parameters
     ----------
     spec : str
-        ``"DxP"`` or ``"DxPxB"`` in inches (``"9x4.5"``, ``"5x4.5x3"``).
+        ``"DxP"`` or ``"DxPxB"`` in inches (``"9x4.5"``, ``"5x4.5x3"``), D in [0.5,
+        :data:`DESIGNATION_MAX_IN`] in, 0 < P <= 3 D, B in [1, 20].
     diameter_in : float, optional
         Must agree with the designation's D (within 1e-9 in) where given.
     n_blades : int, optional
@@ -162,7 +167,8 @@ def propeller_from_size(spec: str, *, diameter_in: float | None = None, n_blades
     ------
     ValueError
         ``diameter_in`` or ``n_blades`` unlike the designation's (the message names
-        ``diameter_in = `` / ``n_blades = ``), or a size :func:`nominal_propeller` refuses.
+        ``diameter_in = `` / ``n_blades = ``), or a figure out of its range (a D past
+        :data:`DESIGNATION_MAX_IN` with its size in inches if it were millimetres).
 
     Warns
     -----
@@ -180,8 +186,14 @@ def propeller_from_size(spec: str, *, diameter_in: float | None = None, n_blades
     if B is not None and n_blades is not None and n_blades != B:
         raise ValueError(f"{spec.strip()}: n_blades = {n_blades}, where the size designation's third figure says {B}")
     blades = B if B is not None else (n_blades if n_blades is not None else 2)
-    if not 0.5 <= D_in <= 100.0:
-        raise ValueError(f"{spec.strip()}: a size designation D x P [in]: D must be in [0.5, 100] in, got {D_in:g}")
+    if not 0.5 <= D_in <= DESIGNATION_MAX_IN:
+        mm = (f" (a size in millimetres, as UIUC's ef, kpf, pl and vp families name theirs, is {D_in / 25.4:.3g}x"
+              f"{P_in / 25.4:.3g} in inches)" if D_in > DESIGNATION_MAX_IN else "")
+        raise ValueError(f"{spec.strip()}: a size designation D x P [in]: D must be in [0.5, {DESIGNATION_MAX_IN:g}] "
+                         f"in, got {D_in:g}{mm}")
+    if B is not None and not 1 <= B <= 20:
+        raise ValueError(f"{spec.strip()}: a size designation D x P x B: the blade count B must be in [1, 20], "
+                         f"got {B}")
     if not 0.0 < P_in <= 3.0 * D_in:
         raise ValueError(f"{spec.strip()}: a size designation D x P [in]: P must be > 0 and at most 3 D "
                          f"({3.0 * D_in:g} in), got {P_in:g}")

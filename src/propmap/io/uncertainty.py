@@ -18,6 +18,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from .nominal_geometry import NOMINAL_COST, NOMINAL_SOURCE
+
 __all__ = ["AXIAL_VALIDATION", "OFF_AXIS", "model_uncertainty"]
 
 #: cross-validated axial errors by kind of parameter set: (median, 90th percentile, worst)
@@ -46,7 +48,7 @@ def _pct(t) -> str:
     return " / ".join(f"{100 * v:.1f}" for v in t) + "%"
 
 
-def model_uncertainty(label: str) -> dict:
+def model_uncertainty(label: str, propeller=None) -> dict:
     """What propmap knows of its own error against measurements with a parameter set.
 
     Parameters
@@ -55,6 +57,10 @@ def model_uncertainty(label: str) -> dict:
         The set's label as outputs record it: ``"calibrated:NAME"``, ``"generic"`` (or a
         generic fold), ``"gill2017-*"`` (the paper's Table I), ``"section:NAME"``, a
         parameter file's path, or anything else (unknown).
+    propeller : Propeller, optional
+        The propeller modelled: a nominal blade (built from a size designation,
+        :mod:`propmap.io.nominal_geometry`) adds what such a blade cost on the catalogue to
+        ``axial``, whose figures are for measured blades.
 
     Returns
     -------
@@ -92,6 +98,10 @@ def model_uncertainty(label: str) -> dict:
         out["axial"] = "a parameter file: its own fit report states its errors; propmap has no cross-validated figure"
     else:
         out["axial"] = "unknown: propmap has no validation figure for this parameter set"
+    if propeller is not None and getattr(propeller, "source", "") == NOMINAL_SOURCE:
+        out["axial"] += ("; those figures are for measured blades, and this propeller is a nominal blade (its size "
+                         "only: docs/cli.md), whose CT error in % of static CT on the catalogue was, median UIUC "
+                         f"vol. 1 / vol. 2, {NOMINAL_COST}")
     out["off_axis"] = OFF_AXIS
     if label and Path(label).suffix.lower() == ".toml":
         from .params_file import set_coverage

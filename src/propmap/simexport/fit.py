@@ -491,7 +491,7 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
     # "(cambered)" of calibrated:apce_8x6 where the API was given no params_label, an export audit)
     meta = {"propeller": propeller.name, "params": label,
             **({"citation": cited} if (cited := catalogue_source(propeller)) else {}),
-            "model_uncertainty": {**model_uncertainty(params_label or getattr(params, "label", "")),
+            "model_uncertainty": {**model_uncertainty(params_label or getattr(params, "label", ""), propeller),
                                   "edgewise_trend": _edgewise_trend(propeller, params, air, envelope)},
             "section_model": params.section_model, "propmap_version": __version__,
             "propmap_source_sha256": source_digest(), "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)",

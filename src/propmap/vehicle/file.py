@@ -244,7 +244,7 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
     from ..io.geometry_files import read_geometry
 
     if not isinstance(spec, str) or not spec.strip():
-        raise VehicleFileError(f"{where}: propeller must be a geometry file or a catalogue name (a string), "
+        raise VehicleFileError(f"{where}: propeller must be a geometry file, a catalogue name or a size (a string), "
                                f"got {short_repr(spec)}")
     local = _local_file(spec, folder)
     if local is not None:
