@@ -560,3 +560,18 @@ def test_cli_fit_flight_warns_of_a_faster_held_out_log(tmp_path, capsys, shared_
     assert code == 0, cap.err
     warned = [w for w in json.loads(cap.out)["warnings"] if w.startswith("held-out log bemnn20210218171908seg2.mat")]
     assert len(warned) == 1 and "extrapolate the fit" in warned[0], warned
+
+
+@pytest.mark.parametrize("ratio, warned", [(0.71, True), (0.749, True), (0.75, False), (0.89, False), (1.25, False),
+                                           (1.26, True)])
+def test_a_flight_fits_hover_torque_outside_its_target_is_warned_of(ratio, warned):
+    """fit flight printed a hover-torque ratio of 0.71 beside 'target 0.75-1.25' with no warning (the nominal
+    blade's fit to the NeuroBEM logs, 2026-12-02); now a ratio outside the target is warned of."""
+    from propmap.cli._flight_report import hover_torque_warning
+
+    ht = {"ratio": ratio, "torque_model": 0.0218, "torque_reference": 0.0307, "omega_hover": 1115.0}
+    said = hover_torque_warning(ht)
+    assert (said is not None) == warned
+    if warned:
+        assert said.startswith(f"the fitted set's hover torque is {ratio:.2f} times") and "outside 0.75-1.25" in said
+    assert hover_torque_warning(None) is None and hover_torque_warning({"unavailable": "x"}) is None

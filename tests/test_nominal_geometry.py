@@ -217,3 +217,4 @@ def test_a_vehicle_file_names_its_rotors_by_size(tmp_path):
     v.write_text(text.replace("blades = 2", "diameter_m = 0.127"))
     with pytest.raises(VehicleFileError, match="diameter_m is for geometry files"):
         pm.read_vehicle(v)
+

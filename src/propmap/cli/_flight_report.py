@@ -90,12 +90,29 @@ def _scores(samples, names, held_idx, pred, baselines, veh):
     return rows, report, reference_masses
 
 
+def hover_torque_warning(ht: dict | None) -> str | None:
+    """The warning where a flight fit's hover torque check (:func:`propmap.identify.flight.hover_torque_check`'s
+    dict, or None) has a ratio outside ``HOVER_TORQUE_TARGET``; None where it is inside, or the check is absent or
+    unavailable. (A ratio of 0.71 was printed beside its target with no warning: a nominal blade's fit to the
+    NeuroBEM logs, a helper's run of 2026-12-02.)"""
+    from ..identify.flight import HOVER_TORQUE_TARGET
+
+    if not ht or "ratio" not in ht or HOVER_TORQUE_TARGET[0] <= ht["ratio"] <= HOVER_TORQUE_TARGET[1]:
+        return None
+    return (f"the fitted set's hover torque is {ht['ratio']:.2f} times the thrust-stand-calibrated generic set's at "
+            f"the same thrust ({ht['torque_model']:.4f} against {ht['torque_reference']:.4f} N m), outside "
+            f"{HOVER_TORQUE_TARGET[0]:g}-{HOVER_TORQUE_TARGET[1]:g}: the logs hold no torque, so the fitted section "
+            "drag at hover is not a physical one (docs/flight.md)")
+
+
 def _report_lines(samples, names, held, n_train: int, rows, report: dict, reference_masses, mass: float) -> list[str]:
     """fit flight's printed report: the samples and logs fitted, the error table (``rows``), the
     logs' own references, the errors by speed band (training and held out, the baselines beside),
     the hover torque against the thrust-stand-calibrated generic set, and leave-one-log-out where
     it ran."""
     import numpy as np
+
+    from ..identify.flight import HOVER_TORQUE_TARGET
 
     # each log's samples' own rate (1 / their median step; a log left with one sample has none)
     rates = sorted({round(1.0 / float(np.median(np.diff(t))), 4)
@@ -117,7 +134,8 @@ def _report_lines(samples, names, held, n_train: int, rows, report: dict, refere
     elif ht:
         text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
                     f"{ht['torque_model']:.4f} N m, the thrust-stand-calibrated generic set at the same thrust "
-                    f"{ht['torque_reference']:.4f} N m (ratio {ht['ratio']:.2f}; target 0.75-1.25)")
+                    f"{ht['torque_reference']:.4f} N m (ratio {ht['ratio']:.2f}; target {HOVER_TORQUE_TARGET[0]:g}-"
+                    f"{HOVER_TORQUE_TARGET[1]:g})")
     if ht and "yaw_r" in ht:
         text.append(f"  yaw channel: k_Q Omega^2 = {ht['torque_yaw_channel']:.4f} N m, correlation r = "
                     f"{ht['yaw_r']:.2f}" + (" (|r| < 0.5: the regression is attenuated and says nothing)"

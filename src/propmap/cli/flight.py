@@ -13,7 +13,7 @@ from ._air import air_label, air_record, resolve_air, with_air_options
 from ._common import Command, InputError, PathArg, load_params, parse_names, warn
 from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond, j_max
 from ._flight_report import (NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table,
-                             band_line)
+                             band_line, hover_torque_warning)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
 from ._vehicle import (_check_rotor_sets, _descent_state_warning, _layout_warnings, _one_set, _rotor_coverage,
                        _vehicle, _vehicle_sets)
@@ -254,6 +254,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     if ht and "unavailable" in ht:
         res = replace(res, warnings=res.warnings + ("the hover torque check is unavailable: the generic reference set "
                                                     "cannot make the fitted set's hover thrust",))
+    elif (off := hover_torque_warning(ht)) is not None:
+        res = replace(res, warnings=res.warnings + (off,))
     from ._sources import file_digests
 
     # (the training logs' digests: wrench tells one of them by its content, not by a name that PX4's HH_MM_SS.ulg

@@ -58,7 +58,7 @@ from .result import FitResult
 __all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STOPPED", "predict_flight", "fit_flight",
            "fitted_body_drag", "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
            "fit_baselines", "baseline_force", "speed_band_errors", "reference_at_vehicle_mass", "reference_errors",
-           "cross_validate_flight", "hover_torque_check",
+           "cross_validate_flight", "hover_torque_check", "HOVER_TORQUE_TARGET",
            "FLIGHT_FIT", "FLIGHT_DISCRETIZATION", "SPEED_BANDS", "AIRFRAME_NAMES", "BASELINES"]
 
 #: parameters fitted by default (docs/flight.md: chosen by leave-one-log-out cross-validation on the
@@ -506,6 +506,11 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
     names = list(folds[0]["x"])
     se = jackknife_std_error([[f["x"][n] for n in names] for f in folds])
     return {"folds": folds, "pooled": pooled, "jackknife_std_error": dict(zip(names, map(float, se)))}
+
+
+#: the range of :func:`hover_torque_check`'s ratio within which a flight fit's section drag is taken as physical
+#: (within 25% of the thrust-stand-calibrated generic set's hover torque at the same thrust; docs/flight.md)
+HOVER_TORQUE_TARGET = (0.75, 1.25)
 
 
 def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightSamples, *, air: Air | None = None,
