@@ -7,7 +7,7 @@ designation ``D x P`` in inches. :func:`nominal_propeller` builds a blade for th
 * the chord is the median c/R, station by station, of the catalogue's blade geometries
   (:data:`CHORD_OVER_R` at :data:`R_OVER_R`): UIUC Propeller Data Site vol. 1 and 2 geometry
   files (Brandt & Selig, AIAA 2011-1255; Deters, Ananda & Selig, AIAA 2014-2151) and APC's
-  PE0 files (APC Propellers, "Technical Information", v2022-0915), 147 propellers of 2.5-19
+  PE0 files (APC Propellers, "Technical Information", v2022-0915), 147 propellers of 1.8-19
   in (``tools/nominal_geometry.py shape``; the catalogue's hubs put the first station at a
   median r/R of 0.15);
 * the blade angle is the helix of the nominal pitch, theta = atan(P / (2 pi r)): the geometric
@@ -65,7 +65,8 @@ def parse_size(spec: str) -> tuple[float, float, int | None] | None:
     -------
     tuple of (float, float, int or None) or None
         ``(diameter_in, pitch_in, n_blades)``, ``n_blades`` None where the designation has no
-        third figure. The figures are not range-checked here (:func:`nominal_propeller` does).
+        third figure. The figures are not range-checked here (:func:`propeller_from_size`
+        does).
     """
     if not isinstance(spec, str):
         return None

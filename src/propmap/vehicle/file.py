@@ -240,7 +240,7 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
                n_blades: int | None = None) -> Propeller:
     """The rotor's propeller: a file relative to ``folder`` (or absolute), else a catalogue name, else a size
     designation (``"5x4.5x3"``, inches: a nominal blade)."""
-    from ..io.catalogue import catalogue, load_propeller
+    from ..io.catalogue import catalogue, catalogue_sizes, load_propeller
     from ..io.geometry_files import read_geometry
 
     if not isinstance(spec, str) or not spec.strip():
@@ -276,8 +276,6 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
             raise VehicleFileError(f"{where}: diameter_m is for geometry files; the size designation {spec.strip()!r} "
                                    "gives the diameter")
         try:
-            from ..io.catalogue import catalogue_sizes
-
             return propeller_from_size(spec, n_blades=n_blades, catalogue_sizes=catalogue_sizes())
         except ValueError as exc:
             raise VehicleFileError(f"{where}: propeller: {str(exc).replace(': n_blades = ', ': blades = ')}") from None
