@@ -4,6 +4,7 @@ Python API, the command line and vehicle files."""
 
 import json
 import math
+import os
 import warnings
 from pathlib import Path
 
@@ -218,3 +219,104 @@ def test_a_vehicle_file_names_its_rotors_by_size(tmp_path):
     with pytest.raises(VehicleFileError, match="diameter_m is for geometry files"):
         pm.read_vehicle(v)
 
+
+# ---- from the mutation audit of this change (helper, 2026-12-02): each kills a mutant the tests above let live
+
+def _quiet(f, *a, **kw):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return f(*a, **kw)
+
+
+# N08, N10: a two-digit blade count is a designation; non-ASCII digits are not
+@pytest.mark.parametrize("spec, size", [("9x4.5x12", (9.0, 4.5, 12)), ("\uff19x4", None), ("9x\u0664", None)])
+def test_parse_size_edges(spec, size):
+    assert parse_size(spec) == size
+
+
+# N15, N16, N19, N20, N24, N36: nominal_propeller's documented bounds, inclusive, and its numeric types
+def test_nominal_propeller_bounds_are_inclusive_and_exact():
+    assert nominal_propeller(0.5 * INCH, 0.5 * INCH).radius == pytest.approx(0.25 * INCH)
+    assert nominal_propeller(100 * INCH, 50 * INCH).radius == pytest.approx(50 * INCH)
+    assert nominal_propeller(0.25, 0.75).pitch == 0.75  # P = 3 D exactly (3 * 0.25 is exact)
+    assert nominal_propeller(0.2, 0.1, n_blades=20).n_blades == 20
+    for kw, match in ((dict(diameter=0.49 * INCH, pitch=0.1 * INCH), "diameter must be in"),
+                      (dict(diameter=101 * INCH, pitch=0.5), "diameter must be in"),
+                      (dict(diameter=0.2, pitch=0.1, n_blades=21), "n_blades must be an integer in"),
+                      (dict(diameter=0.2, pitch=0.1, chord_over_r=[float("nan")] * 18), "chord_over_r")):
+        with pytest.raises(ValueError, match=match):
+            nominal_propeller(**kw)
+    p = nominal_propeller(np.float64(0.254), np.float32(0.1143), np.int64(3))
+    assert p.n_blades == 3 and p.radius == pytest.approx(0.127)
+
+
+# N38, N44, N45, N48, N50, N52: propeller_from_size's bounds, its messages and the stripped name
+def test_a_designation_at_its_bounds_and_its_messages():
+    assert _quiet(resolve_propeller, "0.5x0.5").diameter == pytest.approx(0.5 * INCH)
+    assert _quiet(resolve_propeller, "40x20").diameter == pytest.approx(40 * INCH)
+    assert _quiet(resolve_propeller, " 9x4.5 ").name == "9x4.5"
+    with pytest.raises(ValueError, match="diameter_in = 9.2 in, where the size designation says 9 in"):
+        resolve_propeller("9x4.5", diameter_in=9.2)
+    with pytest.raises(ValueError, match=r"the blade count B must be in \[1, 20\], got 21"):
+        resolve_propeller("9x4.5x21")
+    with pytest.raises(ValueError, match=r"9x0: a size designation D x P \[in\]: P must be > 0 and at most 3 D"):
+        resolve_propeller("9x0")
+
+
+# C02: the blade count picks the catalogue's measured blades of the size
+def test_the_measured_blades_named_are_those_of_the_blade_count():
+    with pytest.warns(UserWarning) as caught:
+        resolve_propeller("5x3.75x3")
+    assert str(caught[-1].message).endswith("measured blades of this size: da4022_5x3.75_3b (name one to use it)")
+    with pytest.warns(UserWarning) as caught:
+        resolve_propeller("5x3.75")
+    assert str(caught[-1].message).endswith("measured blades of this size: da4022_5x3.75 (name one to use it)")
+
+
+# C07: a misspelt catalogue name is still suggested its neighbours (get_entry's suggestion, replaced by the change)
+def test_a_misspelt_name_is_suggested_the_catalogues_near_names(capsys):
+    with pytest.raises(KeyError, match=r"unknown propeller 'apce_8x66'; did you mean apce_8x6"):
+        resolve_propeller("apce_8x66")
+    code, _, err = run(capsys, "loads", "apce_8x66", "--rpm", "6000")
+    assert one_line_error(code, err, "PROP: unknown propeller 'apce_8x66'; did you mean apce_8x6"), err
+
+
+# C09: a special file named like a size is refused as before, not taken for a designation
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+def test_a_fifo_named_like_a_size_is_not_a_nominal_blade(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    os.mkfifo("9x4.5")
+    with pytest.raises(KeyError, match="is not a regular file"):
+        resolve_propeller("9x4.5")
+
+
+# V04, V05: a vehicle file's designation names the catalogue's blades of its size, and its own key `blades`
+def test_a_vehicle_files_size_names_measured_blades_and_its_key(tmp_path):
+    v = example_quad(tmp_path, first_propeller="8x6")
+    with pytest.warns(UserWarning, match=r"8x6: no geometry file.*measured blades of this size: apce_8x6, apcsf_8x6"):
+        pm.read_vehicle(v)
+    v = example_quad(tmp_path, first_propeller="5x4.5x3")
+    v.write_text(v.read_text().replace('propeller = "5x4.5x3"', 'propeller = "5x4.5x3"\nblades = 2', 1))
+    with pytest.raises(VehicleFileError) as exc:
+        pm.read_vehicle(v)
+    assert "propeller: 5x4.5x3: blades = 2, where" in str(exc.value) and "n_blades" not in str(exc.value)
+
+
+# S02: what warn() said in one command does not silence the same library warning in the next (in-process runs)
+def test_warnings_said_by_an_earlier_command_are_said_again(tmp_path, capsys):
+    code, _, err = run(capsys, "loads", "5x4.5x3", "--rpm", "20000")
+    assert code == 0 and err.count("5x4.5x3: no geometry file") == 1, err
+    v = example_quad(tmp_path, first_propeller="5x4.5x3")
+    code, _, err = run(capsys, "trim-vehicle", "--vehicle", v)
+    assert code == 0 and err.count("5x4.5x3: no geometry file") == 1, err
+
+
+# S05: map without PROP names the size form
+def test_map_without_prop_names_a_size(tmp_path, capsys):
+    code, _, err = run(capsys, "map", "--out", tmp_path / "m.nc")
+    assert one_line_error(code, err, "give PROP (catalogue name, geometry file or a size such as 9x4.5)"), err
+
+
+# S06: the package exports nominal_propeller
+def test_the_package_exports_nominal_propeller():
+    assert pm.nominal_propeller is nominal_propeller and "nominal_propeller" in pm.__all__
