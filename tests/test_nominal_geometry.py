@@ -156,6 +156,9 @@ def test_the_command_line_takes_a_size_for_loads_and_fits(tmp_path, capsys):
     code, _, err = run(capsys, "loads", "nosuchprop", "--rpm", "6000")
     assert one_line_error(code, err, "unknown propeller 'nosuchprop': not in the catalogue ('propmap props' lists "
                           "it), nor a file; a propeller without a geometry file is given by its size, 9x4.5")
+    # a maker's code (1045: 10x4.5; 5045: 5x4.5; 2035: 2x3.5) is not guessed, and the form to use is said
+    code, _, err = run(capsys, "loads", "1045", "--rpm", "6000")
+    assert one_line_error(code, err, "a maker's code as 1045 or 5045 is written 10x4.5 or 5x4.5 here"), err
     code, _, err = run(capsys, "loads", "0x2", "--rpm", "6000")
     assert one_line_error(code, err, "D must be in [0.5, 40] in, got 0")
     # a thrust stand's static run of a propeller without a geometry file: fitted, then used by name

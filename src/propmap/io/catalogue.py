@@ -432,6 +432,8 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
         near = difflib.get_close_matches(path.name.split(".")[0].replace("-PERF", ""), _catalogue(), n=3)
         hint = f"; did you mean the catalogue's {', '.join(near)}?" if near else ""
         raise KeyError(f"no file {shown}, and no catalogue propeller of that name{hint}")
+    code = (" (a maker's code as 1045 or 5045 is written 10x4.5 or 5x4.5 here: its figures are read one way by one "
+            "maker and another by the next, so propmap does not guess)" if spec.strip().isdigit() else "")
     raise KeyError(f"unknown propeller {spec!r}" + (near_names(spec, _catalogue(), otherwise="") or
                    ": not in the catalogue ('propmap props' lists it), nor a file; a propeller without a geometry "
-                   "file is given by its size, 9x4.5 (D x P in inches: a nominal blade)"))
+                   f"file is given by its size, 9x4.5 (D x P in inches: a nominal blade){code}"))
