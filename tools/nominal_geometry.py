@@ -2,7 +2,7 @@
 propeller's own geometry, on the catalogue.
 
     .venv/bin/python tools/nominal_geometry.py shape          # the median chord table the package ships
-    .venv/bin/python tools/nominal_geometry.py validate [--out CSV]   # minutes on 2 cores, kernels compiled
+    .venv/bin/python tools/nominal_geometry.py validate [--out CSV]   # 91 s on 2 cores, kernels compiled (2026-12-02)
 
 ``validate`` scores every catalogue propeller whose name gives its pitch (and that has a static run and
 two sweeps) as ``propmap validate --all`` does, blind (the generic set) and fitted (static only; static +
