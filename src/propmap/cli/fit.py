@@ -334,7 +334,8 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     or without units in the names (thrust_kgf,
     Thrust (gf), torque_Nmm; airspeed, incidence_deg and collective_deg optional: a static
     thrust stand, or a rotor's hover collective sweep; optional group), an RCbenchmark /
-    Tyto thrust-stand export as written, or UIUC-format static and wind-tunnel files.
+    Tyto thrust-stand export as written, or UIUC-format static and wind-tunnel files. A fit
+    needs 6 distinct operating points at least (`propmap validate` compares any number).
     """
     import numpy as np
 
