@@ -102,6 +102,23 @@ def test_nominal_propeller_refuses_bad_input_by_name(kw, match):
         nominal_propeller(**kw)
 
 
+@pytest.mark.parametrize("spec, kw, match", [
+    ("5x4.5x3", dict(n_blades=2), "n_blades = 2, where the size designation's third figure says 3"),
+    ("9x4.5", dict(diameter_in=10.0), "diameter_in = 10 in, where the size designation says 9 in"),
+    ("9x4.5", dict(diameter_in=9.2), "diameter_in = 9.2 in, where the size designation says 9 in"),
+    ("5x20", {}, r"P must be > 0 and at most 3 D \(15 in\), got 20"),
+    ("9x0", {}, r"9x0: a size designation D x P \[in\]: P must be > 0 and at most 3 D"),
+    ("9x4.5x0", {}, r"the blade count B must be in \[1, 20\], got 0"),
+    ("9x4.5x21", {}, r"the blade count B must be in \[1, 20\], got 21"),
+    # a size in millimetres (UIUC's pl_100x80) is refused, with what it is in inches
+    ("100x80", {}, r"D must be in \[0.5, 40\] in, got 100 \(a size in millimetres, as UIUC's ef, kpf, pl and vp "
+                   r"families name theirs, is 3.94x3.15 in inches\)"),
+])
+def test_a_designation_unlike_its_options_or_out_of_range_is_refused_naming_the_figure(spec, kw, match):
+    with pytest.raises(ValueError, match=match):
+        resolve_propeller(spec, **kw)
+
+
 def test_resolve_propeller_builds_it_with_a_warning_and_checks_the_options(tmp_path, monkeypatch):
     with pytest.warns(UserWarning, match=r"9x4\.5: no geometry file: a nominal blade \(9 in diameter, 2 blades"):
         p = resolve_propeller("9x4.5")
@@ -111,18 +128,6 @@ def test_resolve_propeller_builds_it_with_a_warning_and_checks_the_options(tmp_p
     with pytest.warns(UserWarning):
         assert resolve_propeller("5x4.5x3").n_blades == 3
         assert resolve_propeller("5x4.5x3", n_blades=3, diameter_in=5.0).n_blades == 3
-    with pytest.raises(ValueError, match="n_blades = 2, where the size designation's third figure says 3"):
-        resolve_propeller("5x4.5x3", n_blades=2)
-    with pytest.raises(ValueError, match="diameter_in = 10 in, where the size designation says 9 in"):
-        resolve_propeller("9x4.5", diameter_in=10.0)
-    with pytest.raises(ValueError, match=r"P must be > 0 and at most 3 D \(15 in\), got 20"):
-        resolve_propeller("5x20")
-    with pytest.raises(ValueError, match=r"the blade count B must be in \[1, 20\], got 0"):
-        resolve_propeller("9x4.5x0")
-    # a size in millimetres (UIUC's pl_100x80) is refused, with what it is in inches
-    with pytest.raises(ValueError, match=r"D must be in \[0.5, 40\] in, got 100 \(a size in millimetres, as UIUC's "
-                                         r"ef, kpf, pl and vp families name theirs, is 3.94x3.15 in inches\)"):
-        resolve_propeller("100x80")
     # a file of that name is a geometry file, read as such (no nominal blade)
     monkeypatch.chdir(tmp_path)
     (tmp_path / "9x4.5").write_text("r/R c/R beta\n0.15 0.15 30\n0.5 0.18 20\n1.0 0.05 10\n")
@@ -258,12 +263,6 @@ def test_a_designation_at_its_bounds_and_its_messages():
     assert _quiet(resolve_propeller, "0.5x0.5").diameter == pytest.approx(0.5 * INCH)
     assert _quiet(resolve_propeller, "40x20").diameter == pytest.approx(40 * INCH)
     assert _quiet(resolve_propeller, " 9x4.5 ").name == "9x4.5"
-    with pytest.raises(ValueError, match="diameter_in = 9.2 in, where the size designation says 9 in"):
-        resolve_propeller("9x4.5", diameter_in=9.2)
-    with pytest.raises(ValueError, match=r"the blade count B must be in \[1, 20\], got 21"):
-        resolve_propeller("9x4.5x21")
-    with pytest.raises(ValueError, match=r"9x0: a size designation D x P \[in\]: P must be > 0 and at most 3 D"):
-        resolve_propeller("9x0")
 
 
 # C02: the blade count picks the catalogue's measured blades of the size

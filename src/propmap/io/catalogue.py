@@ -18,6 +18,7 @@ import numpy as np
 from ..core.geometry import INCH, Propeller
 from .inputs import short_path
 from .geometry_files import read_apc_pe0, read_geometry, read_uiuc_geometry
+from .nominal_geometry import propeller_from_size
 from .readers import StaticRun, Sweep, read_uiuc_static, read_uiuc_sweep
 
 __all__ = ["CatalogueEntry", "catalogue", "catalogue_source", "example_file", "example_files", "get_entry",
@@ -420,8 +421,6 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
         raise KeyError(f"{shown} is a folder, not a catalogue name or a geometry file")
     if kind == "other":
         raise KeyError(f"{shown} is not a regular file")
-    from .nominal_geometry import propeller_from_size
-
     nominal = propeller_from_size(spec, diameter_in=diameter_in, n_blades=n_blades,  # ("9x4.5": no geometry file)
                                   catalogue_sizes=catalogue_sizes())
     if nominal is not None:

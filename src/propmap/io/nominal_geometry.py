@@ -107,6 +107,12 @@ def nominal_propeller(diameter: float, pitch: float, n_blades: int = 2, *, name:
         in, a pitch <= 0 or > 3 D, a blade count not an integer in [1, 20], a chord shape of
         another length or with a negative value.
 
+    References
+    ----------
+    The chord: the median of the UIUC Propeller Data Site vol. 1 and 2 geometry files (Brandt &
+    Selig, AIAA 2011-1255; Deters, Ananda & Selig, AIAA 2014-2151) and APC PE0 files (v2022-0915);
+    the blade angle: the helix of the pitch, the definition of a propeller's geometric pitch.
+
     Notes
     -----
     The geometry is not a measured one: blind predictions with it carry the error of the
