@@ -245,6 +245,7 @@ def test_validate_single_propeller(capsys, prop, params, as_json):
 
 
 # (8 examples, 15 until 2026-12-02: each is a whole level-flight fit, 1.7 s, and CI's 15 minutes are near)
+@pytest.mark.slow
 @settings(derandomize=True, database=None, deadline=None, max_examples=8, print_blob=True,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(M=st.one_of(st.none(), st.sampled_from(["30"]), NUMBER_TEXT),

@@ -298,6 +298,7 @@ def test_flight_commands_check_each_rotors_set(capsys):
     assert "calibrated on another" not in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_a_bundled_example_is_found_by_name_wherever_propmap_is_installed(tmp_path, monkeypatch, capsys):
     """An installed user had no path to the example vehicles (they live in site-packages; the
     README's `read_vehicle("src/propmap/data/examples/...")` worked only in a checkout: a

@@ -253,6 +253,7 @@ def _ground_then(rows: np.ndarray, idle: float = 300.0, seconds: float = 1.0) ->
     return out
 
 
+@pytest.mark.slow
 def test_ground_samples_and_a_logged_stop_are_left_out_with_a_warning(tmp_path, capsys, slow_rows):
     """A log that starts on the ground: the ground's reaction is no rotor's force (the audit's fit
     went from F 0.058 to 0.906 N with it). Samples with a logged stop are left out too, not only

@@ -112,6 +112,7 @@ def test_body_lift_option_reports_it_does_not_matter_when_absent(quad):
     assert set(bl["body_terms"]) == {"cl1_body", "cl2_body", "alpha0_body_deg"}
 
 
+@pytest.mark.slow
 def test_body_lift_test_compares_the_body_terms_not_two_section_optima():
     """The bundled level-flight example with --body-lift: the full fit reaches a better section
     optimum than the fit without body lift, its body lift ending near zero (the data have none:

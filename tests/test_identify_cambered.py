@@ -289,6 +289,7 @@ def test_gauss_newton_polish_converges_on_a_smooth_piece_and_stops_at_a_jump():
     assert not ok and np.all(x == 1.0)
 
 
+@pytest.mark.slow
 def test_continuation_with_noisy_data_ends_where_nelder_mead_alone_does():
     """With noise (0.5% rpm, 0.3 deg pitch) the optimum lies where no Gauss-Newton try
     converges, and the continuation's result is Nelder-Mead's (regression values,

@@ -11,6 +11,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from propmap.core import _jitcache, _kernel
 
 SRC = Path(_kernel.__file__).resolve().parents[1]  # .../propmap
@@ -88,6 +90,7 @@ def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     assert _jitcache.sources_stamp([a, b]) != before
 
 
+@pytest.mark.slow
 def test_editing_the_physics_recompiles_instead_of_serving_the_cached_kernels(tmp_path):
     """A warm cache, then edit _physics.py (here: eq 4's form drag doubled): neither kernel, the
     solver's nor the sensitivities' (which was stamped with its own file only until 2026-11-23

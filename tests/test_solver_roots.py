@@ -48,6 +48,7 @@ def test_every_annulus_of_a_dense_grid_converges_including_descent(apc8x6, apc_p
     assert r.vortex_ring.any()  # descent cases present in the grid
 
 
+@pytest.mark.slow
 def test_selected_root_is_the_first_sign_change_of_a_dense_scan(apc8x6, apc_params):
     om, V, B = _grid()
     r = pm.rotor_loads(apc8x6, apc_params, om, V, B, radial=True)

@@ -193,6 +193,7 @@ def test_a_level_flight_fit_with_rotor_interference_recovers_its_truth(change):
     assert r.cost < 1e-20
 
 
+@pytest.mark.slow
 def test_fit_level_flight_says_the_rotors_own_sets_are_not_used(tmp_path, capsys):
     """`fit level-flight` with a vehicle whose rotors carry their own sets fitted one set and used
     it for every rotor without a word; it says so now, as `fit flight` does."""

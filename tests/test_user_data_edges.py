@@ -139,6 +139,7 @@ def test_points_with_incidences_in_radians_are_warned(tmp_path, capsys):
     assert "radians?" not in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_wrench_names_the_rotors_own_parameter_file(tmp_path, capsys, shared_data):
     """The vehicle file's rotors name their set: wrench used it but printed 'generic' and gave the
     generic set's coverage warnings, none of the file's."""
@@ -322,6 +323,7 @@ def test_a_flap_compliance_interval_too_narrow_is_widened_by_the_profile():
     assert res.x[j] < linear < hi
 
 
+@pytest.mark.slow
 def test_a_flight_fit_records_its_coverage_and_a_faster_log_is_warned(tmp_path, capsys, shared_data):
     """A flight fit's file had no [coverage]: `wrench` on a faster flight than the fit's logs said
     nothing. Fitted on the slow figure-8 (985-1250 rad/s, 3.5 m/s), the race track (to 1912 rad/s)

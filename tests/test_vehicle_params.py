@@ -70,6 +70,7 @@ def test_trim_vehicle_hovers_with_the_vehicles_set_and_params_generic_as_before(
     assert code == 0 and json.loads(out)["trims"][0]["rotor_rpm"][0] == pytest.approx(12246.2, abs=0.1)
 
 
+@pytest.mark.slow
 def test_wrench_takes_the_vehicles_set_and_its_airframe_and_says_a_training_log_is_in_sample(
         tmp_path, capsys, shared_data):
     log = shared_data / "neurobem_flights" / SLOW
@@ -94,6 +95,7 @@ def test_wrench_takes_the_vehicles_set_and_its_airframe_and_says_a_training_log_
         f"propmap ({d['params']})"]["F"]
 
 
+@pytest.mark.slow
 def test_a_log_is_told_in_sample_by_its_content_where_the_set_has_digests(tmp_path, capsys, shared_data):
     """A flight fit's [coverage] lists its training logs' digests (files_sha256, since 2026-11-30):
     a log of a training log's name but other content (PX4 names its logs HH_MM_SS.ulg, day after
@@ -193,6 +195,7 @@ def test_the_vehicles_set_is_an_input_no_output_may_overwrite(tmp_path, capsys, 
     assert (tmp_path / OWN).read_bytes() == before
 
 
+@pytest.mark.slow
 def test_fit_flight_fits_from_base_whatever_the_vehicle_names(tmp_path, capsys, shared_data):
     """The vehicle's own set is the vehicle commands' default, not the fit's start: the same file is
     written with the vehicle's set named and without it."""
@@ -210,6 +213,7 @@ def test_fit_flight_fits_from_base_whatever_the_vehicle_names(tmp_path, capsys, 
     assert written[0] == written[1]
 
 
+@pytest.mark.slow
 def test_the_shipped_set_is_what_its_command_fits(tmp_path, capsys, shared_data):
     """The file's header states the command that wrote it: run again on the four shared segments, it
     gives the shipped parameters (a model or calibration change that moves them asks for a refit)."""
