@@ -128,6 +128,7 @@ def test_shipped_calibration_reloads_exactly_and_reproduces_its_errors():
     assert generic_params() == cal["generic"].params
 
 
+@pytest.mark.slow
 def test_validate_all_on_two_propellers(capsys, tmp_path):
     code, out, err = run(capsys, "validate", "--all", "--props", "apce_8x6,grcp_10x8", "--protocols", "static,blind",
                          "--out-dir", tmp_path / "v", "--json")
@@ -154,6 +155,9 @@ def test_validate_all_on_two_propellers(capsys, tmp_path):
         assert min(default["flap_compliance"]) > 0.5 and max(rigid["flap_compliance"]) == 0.0
     for name in ("validation.json", "validation_per_propeller.csv", "cross_validation.png", "published_cases.png"):
         assert (tmp_path / "v" / name).stat().st_size > 100
+    # the run's warnings, as standard error says them, printed and in the file (since 2026-12-02)
+    said = [ln.split("propmap: warning: ", 1)[1] for ln in err.splitlines() if ln.startswith("propmap: warning: ")]
+    assert rep["warnings"] == said == json.loads((tmp_path / "v" / "validation.json").read_text())["warnings"]
     # the data cited in the report and on every row of the table (a citation audit: neither did)
     assert "Brandt & Selig AIAA 2011-1255" in rep["citation"] and "Deters, Ananda & Selig" in rep["citation"]
     table = (tmp_path / "v" / "validation_per_propeller.csv").read_text().splitlines()

@@ -109,12 +109,56 @@ def given(ctx: click.Context, *params: str) -> list[str]:
 #: the warnings :func:`warn` printed in this command (cli.main clears it; a library warning of the same text is not
 #: printed again at the command's end: a nominal blade's, said by PROP and by a vehicle file, was said twice)
 SAID: set = set()
+#: this command's warnings in the order they arose, for the --json outputs (:func:`run_warnings`): ``caught`` is
+#: cli.main's list of the warnings it records (printed at the command's end), ``said`` holds (how many of them had
+#: been caught, the text) for each :func:`warn`
+RUN_WARNINGS: dict = {"caught": [], "said": []}
+_PACKAGE_DIR = str(Path(__file__).parent.parent)
 
 
 def warn(message: str) -> None:
     """A one-line warning on stderr (the run goes on); recorded in :data:`SAID`."""
     SAID.add(str(message))
+    RUN_WARNINGS["said"].append((len(RUN_WARNINGS["caught"]), str(message)))
     click.echo(f"propmap: warning: {message}", err=True)
+
+
+def package_warning(w) -> bool:
+    """Whether a recorded warning (``warnings.WarningMessage``) is one of propmap's own: a
+    UserWarning raised in the package's code, which the commands say (other libraries'
+    warnings are not said: cli.main)."""
+    return issubclass(w.category, UserWarning) and str(w.filename).startswith(_PACKAGE_DIR + os.sep)
+
+
+def run_warnings() -> list[str]:
+    """The warnings this command has said on standard error so far, or will say at its end
+    (the library's, which cli.main prints last), in the order they arose, each once and on one
+    line, without the ``propmap: warning:`` prefix: the ``warnings`` of every --json output,
+    so that a script reading it sees what a user reading the terminal sees.
+
+    Returns
+    -------
+    list of str
+        Empty outside cli.main (the command functions called directly).
+    """
+    caught = RUN_WARNINGS["caught"]
+    out: list[str] = []
+    said = iter(RUN_WARNINGS["said"])
+    pending = next(said, None)
+    for k in range(len(caught) + 1):
+        while pending is not None and pending[0] <= k:
+            out.append(pending[1])
+            pending = next(said, None)
+        if k < len(caught) and package_warning(caught[k]):
+            out.append(str(caught[k].message))
+    seen: set = set()
+    return [m for m in (" ".join(t.split()) for t in out) if not (m in seen or seen.add(m))]
+
+
+def with_warnings(record: dict) -> dict:
+    """``record`` with ``warnings`` (:func:`run_warnings`) added as its last key where it has
+    none."""
+    return record if "warnings" in record else {**record, "warnings": run_warnings()}
 
 
 def radians_like(value_deg: float) -> bool:
@@ -484,8 +528,9 @@ def geometry_record(propeller) -> dict:
 
 
 def echo_json(obj) -> None:
-    """Print ``obj`` as JSON; NaN or inf anywhere is a bug, so it raises instead."""
-    click.echo(json.dumps(obj, indent=2, allow_nan=False))
+    """Print ``obj`` as JSON, a record with the command's warnings (:func:`with_warnings`); NaN
+    or inf anywhere is a bug, so it raises instead."""
+    click.echo(json.dumps(with_warnings(obj) if isinstance(obj, dict) else obj, indent=2, allow_nan=False))
 
 
 def option_group(name: str, cls, options):

@@ -8,7 +8,7 @@ import click
 
 from ..core.units import RPM
 from ._air import resolve_air, with_air_options
-from ._common import (PARAMS_HELP, Command, InputError, PathArg, check_section_match, load_params, warn,
+from ._common import (PARAMS_HELP, Command, InputError, PathArg, check_section_match, echo_json, load_params, warn,
                       with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs, vehicle_inputs
@@ -194,9 +194,12 @@ def _echo_export(res, target: str, what: str, cited: str | None, report: Path | 
     """The export's coefficients and errors against the full model, as text (``what``: the
     propeller and its parameter set), or with ``report`` (--json) the report file's JSON as
     written (since 2026-11-30: its own record left out the report's other keys, and a NaN two
-    levels down, every check point flagged, failed it with exit 2 after the files were written)."""
+    levels down, every check point flagged, failed it with exit 2 after the files were written),
+    with the run's ``warnings`` as every --json output has them (since 2026-12-02)."""
     if report is not None:
-        click.echo(report.read_text(encoding="utf-8").rstrip("\n"))
+        import json
+
+        echo_json(json.loads(report.read_text(encoding="utf-8")))
     else:
         click.echo(f"{target} coefficients of {what}:" + (f"\n  (data: {cited})" if cited else ""))
         for k, v in res.coefficients.items():

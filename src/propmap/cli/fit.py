@@ -12,7 +12,7 @@ import click
 from ..core.units import RPM
 from ._air import resolve_air, with_air_options
 from ._common import (Command, InputError, PathArg, _short, check_section_match, load_params, option_group,
-                       parse_names, warn, with_prop_options)
+                       parse_names, run_warnings, warn, with_prop_options)
 from ._coverage import j_max
 from ._load_comparison import _catalogue_comparison, _file_comparison
 from ._paths import check_outputs, vehicle_inputs
@@ -187,6 +187,10 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     report = {**result.to_dict(), "base": base_label, "params_file": str(out), "coverage": coverage,
               "data_warnings": list(data_warnings), "propmap_version": __version__,  # (as maps and exports record it)
               "propmap_source_sha256": source_digest()}
+    # every warning the run says, as every command's --json gives them: the run's so far (the data's among them), then
+    # the fit's own, which are said after the report (they alone were the report's warnings until 2026-12-02)
+    so_far = run_warnings()
+    report["warnings"] = so_far + [w for w in result.warnings if " ".join(w.split()) not in so_far]
     write_params(out, result.params, result.air, body=body, coverage=coverage,
                  comment=f"fitted by propmap {__version__} fit ({report.get('kind')}); source sha256 "
                          f"{report['propmap_source_sha256']}")

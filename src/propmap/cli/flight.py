@@ -10,7 +10,7 @@ import click
 from ..core.units import RPM
 from ._air import air_label, air_record, resolve_air, with_air_options
 
-from ._common import Command, InputError, PathArg, load_params, parse_names, warn
+from ._common import Command, InputError, PathArg, load_params, parse_names, warn, with_warnings
 from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond, j_max
 from ._flight_report import (NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table,
                              band_line, hover_torque_warning)
@@ -550,13 +550,9 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     refs, masses = reference_errors(samples, veh.mass)
     rows = [(f"propmap ({label})", err)] + _reference_rows(refs, veh.mass, "log's own prediction")
     in_fit = _fitted_to(set(sets), log_path, log.name)
-    if as_json:
-        import json
-
-        click.echo(json.dumps({"params": label, "rho": air.rho, "air": air_record(air), "errors": dict(rows),
-                               "speed_bands": bands,
-                               "samples": samples.n, "left_out": log.n - samples.n, "in_fit": bool(in_fit)},
-                              indent=2))
+    if as_json:  # (printed last: its warnings are the run's, those of the log's coverage and descents among them)
+        record = {"params": label, "rho": air.rho, "air": air_record(air), "errors": dict(rows), "speed_bands": bands,
+                  "samples": samples.n, "left_out": log.n - samples.n, "in_fit": bool(in_fit)}
     else:
         left = log.n - samples.n
         click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "
@@ -577,3 +573,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     _rotor_coverage(veh, sets, [[ld] for ld in w.loads], air)
     for line in _descent_state_warning(w.loads, log.name):
         warn(line)
+    if as_json:
+        import json
+
+        click.echo(json.dumps(with_warnings(record), indent=2))

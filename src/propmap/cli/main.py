@@ -15,7 +15,7 @@ import click
 from ..core.air import TipMachWarning
 from ..io.coverage import CoverageWarning
 from .. import __version__
-from ._common import SAID
+from ._common import RUN_WARNINGS, SAID, package_warning
 from .demo import demo
 from .export_sim import export_sim_command
 from .fit import fit
@@ -38,9 +38,6 @@ for _cmd in (props, loads, trim_command, trim_vehicle_command, wrench_command, m
              validate, fit, demo):
     cli.add_command(_cmd)
 fit.add_command(fit_flight_command)
-
-
-_PACKAGE_DIR = __file__.rsplit("/cli/", 1)[0]
 
 
 def _one_line(text: str) -> str:
@@ -176,9 +173,11 @@ def _main(argv: list[str] | None) -> int:
         pass
     caught: list = []
     SAID.clear()
+    RUN_WARNINGS["said"].clear()
     said: list[str] = []  # the error line, printed after the warnings (the last line is the error)
     try:
         with warnings.catch_warnings(record=True) as caught:
+            RUN_WARNINGS["caught"] = caught  # (the --json outputs' warnings: _common.run_warnings)
             warnings.simplefilter("always")
             # the API's supersonic-tip warning (with its "rpm for rad/s?" hint): the commands take rpm and warn
             # from tip Mach 0.7 themselves (cli._coverage.coverage_messages)
@@ -232,8 +231,8 @@ def _main(argv: list[str] | None) -> int:
         for s, handler in previous.items():
             signal.signal(s, handler)
         seen = set(SAID)  # (those warn() printed: a library warning of the same text is not said twice)
-        ours = [w for w in caught if issubclass(w.category, UserWarning) and str(w.filename).startswith(_PACKAGE_DIR)]
-        for w in ours:
+        RUN_WARNINGS["caught"] = []
+        for w in filter(package_warning, caught):
             if str(w.message) in seen:
                 continue
             seen.add(str(w.message))

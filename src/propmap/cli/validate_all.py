@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, echo_json
+from ._common import InputError, echo_json, run_warnings
 
 #: the protocols of validation.cross_validate (kept here so that the CLI starts without it;
 #: tests check the two agree)
@@ -424,7 +424,7 @@ def run_all(protocols, only, out_dir: Path | None, as_json: bool) -> None:
               "targets": {"source": TARGETS_SOURCE, "status": target_status(cat)},
               "protocols": {k: PROTOCOL_TEXT[k] for k in protocols},
               "units": "rms errors as fractions of the propeller's measured static CT / CP",
-              "citation": CATALOGUE_CITATION}
+              "citation": CATALOGUE_CITATION, "warnings": run_warnings()}  # (the run's: --json's and the file's)
     if out_dir is not None:
         from ..plots import plot_cases, plot_cv_summary
 
