@@ -69,11 +69,57 @@ def test_a_fits_report_gives_the_runs_warnings_then_its_own(tmp_path, capsys, sh
 def test_map_and_validate_give_theirs(tmp_path, capsys, shared_data):
     """map (a grid beyond the calibrated set's data) and validate (UIUC vol. 1 apce_8x6's static run
     against a nominal 8x6): the JSON's warnings are standard error's."""
-    grid = ["--rpm", "1000:3000:2", "--airspeed", "0:20:2", "--incidence-deg", "0:90:2", "--check-points", "0"]
+    grid = ["--rpm", "1000:3000:2", "--airspeed", "0:20:2", "--incidence-deg", "0:90:2", "--check-points", "50"]
     static = shared_data / "uiuc_propdb" / "v1" / "apce_8x6_static_2797rd.txt"
-    for argv, word in ((["map", "apce_8x6", *grid, "--out", tmp_path / "m.nc"], "advance ratio"),
+    # (the coarse map misses its targets: a warning said after the JSON until 2026-12-02, a review)
+    for argv, word in ((["map", "apce_8x6", *grid, "--out", tmp_path / "m.nc"], "the map misses the targets"),
                        (["validate", static, "--prop", "8x6"], "nominal blade")):
         code, out, err = run(capsys, *argv, "--json")
         assert code == 0, err
         got = json.loads(out)["warnings"]
         assert got == _said(err) and any(word in w for w in got), (argv[0], got)
+
+
+def test_a_warning_said_while_the_figures_are_drawn_is_in_the_fits_report(tmp_path, capsys, monkeypatch):
+    """A fit's figures are drawn before its report is written, so that a warning they give (fit flight's speed
+    figure with nothing to draw: tests/test_stop104.py) is in the report's warnings, before the fit's own (a
+    review of 2026-12-02 found it on standard error only)."""
+    import dataclasses
+
+    import numpy as np
+
+    import propmap as pm
+    from propmap.cli import _common
+    from propmap.cli._common import warn
+    from propmap.cli.fit import _write_outputs
+    from propmap.identify import FitOptions, LoadData, fit_loads
+
+    prop, params = pm.load_propeller("apce_8x6"), pm.generic_params()
+    omega = np.linspace(4000.0, 8000.0, 6) * np.pi / 30
+    r = pm.rotor_loads(prop, params, omega, 0.0, 0.0)
+    data = LoadData(omega, np.zeros(6), np.zeros(6), {"thrust": r.thrust, "torque": r.torque},
+                    np.full(6, "all", dtype=object), "model-made")
+    res = dataclasses.replace(fit_loads(data, prop, options=FitOptions(max_nfev=2)), warnings=("the fit's own",))
+    monkeypatch.setitem(_common.RUN_WARNINGS, "active", True)  # (as inside cli.main's run of a command)
+    monkeypatch.setitem(_common.RUN_WARNINGS, "said", [])
+    monkeypatch.setitem(_common.RUN_WARNINGS, "caught", [])
+
+    def figure(png):
+        warn("the speed figure is not drawn: an example")
+        return (".png",)
+
+    _write_outputs(res, tmp_path / "p.toml", "generic", True, figure=figure)
+    out, err = capsys.readouterr()
+    want = ["the speed figure is not drawn: an example", "the fit's own"]
+    assert json.loads(out)["warnings"] == want == json.loads((tmp_path / "p.report.json").read_text())["warnings"]
+    assert _said(err) == want
+
+
+def test_a_runs_warnings_do_not_outlive_it(capsys):
+    """run_warnings() is empty once cli.main's run has ended (a command function called directly later, as tests
+    do, got the last run's warnings in its report: a review)."""
+    from propmap.cli._common import RUN_WARNINGS, run_warnings
+
+    code, _, err = run(capsys, "loads", "9x4.5", "--rpm", "6000")
+    assert code == 0 and "nominal blade" in err
+    assert run_warnings() == [] and RUN_WARNINGS["said"] == [] and not RUN_WARNINGS["active"]

@@ -111,15 +111,16 @@ def given(ctx: click.Context, *params: str) -> list[str]:
 SAID: set = set()
 #: this command's warnings in the order they arose, for the --json outputs (:func:`run_warnings`): ``caught`` is
 #: cli.main's list of the warnings it records (printed at the command's end), ``said`` holds (how many of them had
-#: been caught, the text) for each :func:`warn`
-RUN_WARNINGS: dict = {"caught": [], "said": []}
+#: been caught, the text) for each :func:`warn`; ``active`` while cli.main runs a command (emptied after it)
+RUN_WARNINGS: dict = {"caught": [], "said": [], "active": False}
 _PACKAGE_DIR = str(Path(__file__).parent.parent)
 
 
 def warn(message: str) -> None:
     """A one-line warning on stderr (the run goes on); recorded in :data:`SAID`."""
     SAID.add(str(message))
-    RUN_WARNINGS["said"].append((len(RUN_WARNINGS["caught"]), str(message)))
+    if RUN_WARNINGS["active"]:
+        RUN_WARNINGS["said"].append((len(RUN_WARNINGS["caught"]), str(message)))
     click.echo(f"propmap: warning: {message}", err=True)
 
 
@@ -139,8 +140,10 @@ def run_warnings() -> list[str]:
     Returns
     -------
     list of str
-        Empty outside cli.main (the command functions called directly).
+        Empty outside a run of cli.main (the command functions called directly, or after the run).
     """
+    if not RUN_WARNINGS["active"]:
+        return []
     caught = RUN_WARNINGS["caught"]
     out: list[str] = []
     said = iter(RUN_WARNINGS["said"])

@@ -187,14 +187,19 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     report = {**result.to_dict(), "base": base_label, "params_file": str(out), "coverage": coverage,
               "data_warnings": list(data_warnings), "propmap_version": __version__,  # (as maps and exports record it)
               "propmap_source_sha256": source_digest()}
-    # every warning the run says, as every command's --json gives them: the run's so far (the data's among them), then
-    # the fit's own, which are said after the report (they alone were the report's warnings until 2026-12-02)
-    so_far = run_warnings()
-    report["warnings"] = so_far + [w for w in result.warnings if " ".join(w.split()) not in so_far]
     write_params(out, result.params, result.air, body=body, coverage=coverage,
                  comment=f"fitted by propmap {__version__} fit ({report.get('kind')}); source sha256 "
                          f"{report['propmap_source_sha256']}")
     stem = out.with_suffix("")
+    if figure is not None:  # after the parameters: a stopped run leaves no figure without them
+        # (a figure function may return the suffixes it wrote, a tuple, where one of them had nothing to draw)
+        written = figure(stem.with_name(stem.name + ".png"))
+        figure_suffixes = written if isinstance(written, tuple) else figure_suffixes
+    # every warning the run says, as every command's --json gives them: the run's so far (the data's and the figures'
+    # among them: the figures are drawn first since 2026-12-02), then the fit's own, which are said after the report
+    # (they alone were the report's warnings until 2026-12-02)
+    so_far = run_warnings()
+    report["warnings"] = so_far + [w for w in result.warnings if " ".join(w.split()) not in so_far]
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
         json.dump(report, fh, indent=2, default=float)
     said = [f"DATA WARNING: {w}" for w in data_warnings]
@@ -202,10 +207,6 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     text = head + result.report_text() + tail + "".join("\n" + line for line in said)
     with atomic_write(stem.with_name(stem.name + ".report.txt")) as fh:
         fh.write(text + "\n")
-    if figure is not None:  # last: a stopped run leaves no figure without its parameters
-        # (a figure function may return the suffixes it wrote, a tuple, where one of them had nothing to draw)
-        written = figure(stem.with_name(stem.name + ".png"))
-        figure_suffixes = written if isinstance(written, tuple) else figure_suffixes
     # the fit's warnings go to standard error, once (the first MAX_WARNINGS, and how many more): the report on
     # standard output leaves them all out (report.txt keeps them), and the data's, said as they arose. It is the
     # report of the result without its warnings, not report.txt's lines less those whose text matched a warning's

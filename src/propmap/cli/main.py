@@ -173,7 +173,7 @@ def _main(argv: list[str] | None) -> int:
         pass
     caught: list = []
     SAID.clear()
-    RUN_WARNINGS["said"].clear()
+    RUN_WARNINGS.update(said=[], caught=[], active=True)
     said: list[str] = []  # the error line, printed after the warnings (the last line is the error)
     try:
         with warnings.catch_warnings(record=True) as caught:
@@ -231,7 +231,7 @@ def _main(argv: list[str] | None) -> int:
         for s, handler in previous.items():
             signal.signal(s, handler)
         seen = set(SAID)  # (those warn() printed: a library warning of the same text is not said twice)
-        RUN_WARNINGS["caught"] = []
+        RUN_WARNINGS.update(said=[], caught=[], active=False)  # (a command function called later, directly: none)
         for w in filter(package_warning, caught):
             if str(w.message) in seen:
                 continue
