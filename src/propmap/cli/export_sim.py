@@ -8,8 +8,8 @@ import click
 
 from ..core.units import RPM
 from ._air import resolve_air, with_air_options
-from ._common import (PARAMS_HELP, Command, InputError, PathArg, check_section_match, echo_json, load_params, warn,
-                      with_prop_options)
+from ._common import (PARAMS_HELP, Command, InputError, PathArg, check_section_match, echo_json, load_params,
+                      run_warnings, warn, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs, vehicle_inputs
 from ._sources import catalogue_citation
@@ -163,6 +163,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     cited = catalogue_citation(prop)
     if cited:
         res.meta["citation"] = cited
+    res.meta["warnings"] = run_warnings()  # (the report's, printed with --json, as every --json output has them)
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
                          vehicle_label=str(vehicle) if vehicle is not None else "", airframe_label=airframe)
     _echo_export(res, target, f"{propeller.name} ({label})", cited, files[1] if as_json else None)
@@ -194,8 +195,8 @@ def _echo_export(res, target: str, what: str, cited: str | None, report: Path | 
     """The export's coefficients and errors against the full model, as text (``what``: the
     propeller and its parameter set), or with ``report`` (--json) the report file's JSON as
     written (since 2026-11-30: its own record left out the report's other keys, and a NaN two
-    levels down, every check point flagged, failed it with exit 2 after the files were written),
-    with the run's ``warnings`` as every --json output has them (since 2026-12-02)."""
+    levels down, every check point flagged, failed it with exit 2 after the files were written);
+    the report holds the run's ``warnings``, as every --json output does (since 2026-12-02)."""
     if report is not None:
         import json
 
