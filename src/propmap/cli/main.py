@@ -230,13 +230,16 @@ def _main(argv: list[str] | None) -> int:
         _redelivery.clear()
         for s, handler in previous.items():
             signal.signal(s, handler)
-        seen = set(SAID)  # (those warn() printed: a library warning of the same text is not said twice)
+        # (those warn() printed: a library warning of the same text, on one line, is not said twice; the --json outputs'
+        # warnings are told apart the same way, _common.run_warnings)
+        seen = {_one_line(m) for m in SAID}
         RUN_WARNINGS.update(said=[], caught=[], active=False)  # (a command function called later, directly: none)
         for w in filter(package_warning, caught):
-            if str(w.message) in seen:
+            line = _one_line(w.message)
+            if line in seen:
                 continue
-            seen.add(str(w.message))
-            click.echo(f"propmap: warning: {_one_line(w.message)}", err=True)
+            seen.add(line)
+            click.echo(f"propmap: warning: {line}", err=True)
         for line in said:
             click.echo(line, err=True)
     return 0
