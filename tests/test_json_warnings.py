@@ -4,10 +4,15 @@ them: a script reading the JSON saw none of them (noticed since stop 99, done 20
 from __future__ import annotations
 
 import json
+import shutil
+import warnings
+from pathlib import Path
 
 import pytest
 
+import propmap as pm
 from tests.cli_helpers import example_quad, run
+from tests.test_simexport import _vehicle_toml
 
 PREFIX = "propmap: warning: "
 
@@ -80,29 +85,40 @@ def test_map_and_validate_give_theirs(tmp_path, capsys, shared_data):
         assert got == _said(err) and any(word in w for w in got), (argv[0], got)
 
 
-def test_a_warning_said_while_the_figures_are_drawn_is_in_the_fits_report(tmp_path, capsys, monkeypatch):
-    """A fit's figures are drawn before its report is written, so that a warning they give (fit flight's speed
-    figure with nothing to draw: tests/test_stop104.py) is in the report's warnings, before the fit's own (a
-    review of 2026-12-02 found it on standard error only)."""
+def _fit_result(own: tuple):
+    """A load fit's result (apce_8x6's model-made static loads, two evaluations) whose own warnings are ``own``."""
     import dataclasses
 
     import numpy as np
 
-    import propmap as pm
-    from propmap.cli import _common
-    from propmap.cli._common import warn
-    from propmap.cli.fit import _write_outputs
     from propmap.identify import FitOptions, LoadData, fit_loads
 
-    prop, params = pm.load_propeller("apce_8x6"), pm.generic_params()
+    prop = pm.load_propeller("apce_8x6")
     omega = np.linspace(4000.0, 8000.0, 6) * np.pi / 30
-    r = pm.rotor_loads(prop, params, omega, 0.0, 0.0)
+    r = pm.rotor_loads(prop, pm.generic_params(), omega, 0.0, 0.0)
     data = LoadData(omega, np.zeros(6), np.zeros(6), {"thrust": r.thrust, "torque": r.torque},
                     np.full(6, "all", dtype=object), "model-made")
-    res = dataclasses.replace(fit_loads(data, prop, options=FitOptions(max_nfev=2)), warnings=("the fit's own",))
-    monkeypatch.setitem(_common.RUN_WARNINGS, "active", True)  # (as inside cli.main's run of a command)
-    monkeypatch.setitem(_common.RUN_WARNINGS, "said", [])
+    return dataclasses.replace(fit_loads(data, prop, options=FitOptions(max_nfev=2)), warnings=own)
+
+
+def _in_a_run(monkeypatch, said=()):
+    """The warnings' record as cli.main's run of a command leaves it, with ``said`` (index, text) pairs."""
+    from propmap.cli import _common
+
+    monkeypatch.setitem(_common.RUN_WARNINGS, "active", True)
+    monkeypatch.setitem(_common.RUN_WARNINGS, "said", list(said))
     monkeypatch.setitem(_common.RUN_WARNINGS, "caught", [])
+
+
+def test_a_warning_said_while_the_figures_are_drawn_is_in_the_fits_report(tmp_path, capsys, monkeypatch):
+    """A fit's figures are drawn before its report is written, so that a warning they give (fit flight's speed
+    figure with nothing to draw: tests/test_stop104.py) is in the report's warnings, before the fit's own (a
+    review of 2026-12-02 found it on standard error only)."""
+    from propmap.cli._common import warn
+    from propmap.cli.fit import _write_outputs
+
+    res = _fit_result(("the fit's own",))
+    _in_a_run(monkeypatch)
 
     def figure(png):
         warn("the speed figure is not drawn: an example")
@@ -123,3 +139,89 @@ def test_a_runs_warnings_do_not_outlive_it(capsys):
     code, _, err = run(capsys, "loads", "9x4.5", "--rpm", "6000")
     assert code == 0 and "nominal blade" in err
     assert run_warnings() == [] and RUN_WARNINGS["said"] == [] and not RUN_WARNINGS["active"]
+
+
+# ---- a mutation audit's cases (2026-12-02): what the tests above let through -------------------------------------
+
+def test_export_sims_warnings_are_listed_in_the_order_they_arose(tmp_path, capsys):
+    """A warn() line (the rotors' interference), a library warning (the hover beyond RotorPy's limits: stderr says it
+    last) and the coverage's, in that order: the library's were listed before the command's."""
+    p = Path(_vehicle_toml(tmp_path / "v.toml", 4))
+    p.write_text(p.read_text().replace("mass = 1.0", "mass = 6.0\nrotor_interference = 1.0"))
+    code, out, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--out", tmp_path / "v.py",
+                         "--vehicle", p, "--points", "300", "--json")
+    assert code == 0, err
+    got, said = json.loads(out)["warnings"], _said(err)
+    assert sorted(got) == sorted(said)
+    at = [next(k for k, w in enumerate(got) if w.startswith(start))
+          for start in ("--vehicle: its rotors' interference", "--vehicle: it hovers at", "incidence up to")]
+    assert at == sorted(at), (at, got)
+
+
+def test_a_warning_raised_twice_is_listed_once(tmp_path, capsys):
+    """PROP 9x6 and the vehicle's 9x6 rotors each raise the nominal blade's warning."""
+    q = _vehicle_toml(tmp_path / "q.toml", 4, prop="9x6")
+    code, out, err = run(capsys, "export-sim", "9x6", "--target", "rotorpy", "--out", tmp_path / "q.py",
+                         "--vehicle", q, "--points", "300", "--json")
+    assert code == 0, err
+    got = json.loads(out)["warnings"]
+    assert got == _said(err) and sum("nominal blade" in w for w in got) == 1
+
+
+def test_a_warning_quoting_a_path_with_a_line_break_is_one_line(tmp_path, capsys):
+    """A parameter file in a folder whose name holds a line break, quoted by the coverage warnings: one line on
+    standard error (it was two) and in the JSON."""
+    folder = tmp_path / "a\nb"
+    folder.mkdir()
+    shutil.copy(pm.example_file("neurobem_quadrotor.params.toml"), folder / "p.toml")
+    code, out, err = run(capsys, "loads", "apce_8x6", "--params", folder / "p.toml", "--rpm", "30000", "--airspeed",
+                         "25", "--json")
+    assert code == 0, err
+    got = json.loads(out)["warnings"]
+    assert got == _said(err) and any("a b/p.toml" in w for w in got), got
+
+
+def test_other_warnings_are_neither_said_nor_listed(capsys, monkeypatch):
+    """Another module's UserWarning, and a RuntimeWarning raised in propmap's own code."""
+    import propmap.core.solver as solver
+
+    real = solver.rotor_loads
+
+    def rotor_loads(*args, **kwargs):
+        warnings.warn("a foreign library's UserWarning", UserWarning)  # (from this file: not propmap's)
+        warnings.warn("a RuntimeWarning in propmap's code", RuntimeWarning, stacklevel=2)  # (cli/loads.py's)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(solver, "rotor_loads", rotor_loads)
+    code, out, err = run(capsys, "loads", "apce_8x6", "--rpm", "5000", "--airspeed", "5", "--json")
+    assert code == 0, err
+    assert json.loads(out)["warnings"] == [] and "foreign" not in err and "RuntimeWarning" not in err, err
+
+
+def test_outside_a_run_nothing_is_kept_or_listed(monkeypatch, capsys):
+    from propmap.cli._common import RUN_WARNINGS, run_warnings, warn, with_warnings
+
+    warn("said outside a run")
+    assert RUN_WARNINGS["said"] == [] and "said outside a run" in capsys.readouterr().err
+    monkeypatch.setitem(RUN_WARNINGS, "said", [(0, "stale")])
+    assert run_warnings() == [] and with_warnings({})["warnings"] == []
+
+
+def test_a_fits_own_warning_already_said_is_in_its_report_once(tmp_path, capsys, monkeypatch):
+    from propmap.cli._common import warn
+    from propmap.cli.fit import _write_outputs
+
+    res = _fit_result(("twice  said", "own", "own"))
+    _in_a_run(monkeypatch)
+    warn("twice said")
+    _write_outputs(res, tmp_path / "p.toml", "generic", True)
+    assert json.loads((tmp_path / "p.report.json").read_text())["warnings"] == ["twice said", "own"]
+
+
+def test_a_records_own_warnings_are_kept(monkeypatch):
+    """with_warnings adds the run's to a record without them (export-sim's report, written with them, keeps its)."""
+    from propmap.cli._common import with_warnings
+
+    _in_a_run(monkeypatch, said=[(0, "later")])
+    assert with_warnings({"warnings": ["as written"]}) == {"warnings": ["as written"]}
+    assert with_warnings({"a": 1}) == {"a": 1, "warnings": ["later"]}

@@ -117,11 +117,12 @@ _PACKAGE_DIR = str(Path(__file__).parent.parent)
 
 
 def warn(message: str) -> None:
-    """A one-line warning on stderr (the run goes on); recorded in :data:`SAID`."""
+    """A one-line warning on stderr (the run goes on; a line break in it, as a path may hold, is
+    printed as a space, as the --json outputs list it); recorded in :data:`SAID`."""
     SAID.add(str(message))
     if RUN_WARNINGS["active"]:
         RUN_WARNINGS["said"].append((len(RUN_WARNINGS["caught"]), str(message)))
-    click.echo(f"propmap: warning: {message}", err=True)
+    click.echo(f"propmap: warning: {' '.join(str(message).split())}", err=True)
 
 
 def package_warning(w) -> bool:

@@ -199,7 +199,8 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     # among them: the figures are drawn first since 2026-12-02), then the fit's own, which are said after the report
     # (they alone were the report's warnings until 2026-12-02)
     so_far = run_warnings()
-    report["warnings"] = so_far + [w for w in result.warnings if " ".join(w.split()) not in so_far]
+    report["warnings"] = so_far + [w for w in dict.fromkeys(" ".join(w.split()) for w in result.warnings)
+                                   if w not in so_far]
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
         json.dump(report, fh, indent=2, default=float)
     said = [f"DATA WARNING: {w}" for w in data_warnings]
