@@ -106,23 +106,26 @@ def given(ctx: click.Context, *params: str) -> list[str]:
     return out
 
 
-#: the warnings :func:`warn` printed in this command (cli.main clears it; a library warning of the same text is not
-#: printed again at the command's end: a nominal blade's, said by PROP and by a vehicle file, was said twice)
-SAID: set = set()
-#: this command's warnings in the order they arose, for the --json outputs (:func:`run_warnings`): ``caught`` is
-#: cli.main's list of the warnings it records (printed at the command's end), ``said`` holds (how many of them had
-#: been caught, the text) for each :func:`warn`; ``active`` while cli.main runs a command (emptied after it)
+#: this command's warnings in the order they arose, for the --json outputs (:func:`run_warnings`) and for cli.main,
+#: which does not print a library warning again that :func:`warn` said (a nominal blade's, said by PROP and by a
+#: vehicle file, was said twice): ``caught`` is cli.main's list of the warnings it records (printed at the command's
+#: end), ``said`` holds (how many of them had been caught, the text) for each :func:`warn`; ``active`` while cli.main
+#: runs a command (emptied after it)
 RUN_WARNINGS: dict = {"caught": [], "said": [], "active": False}
 _PACKAGE_DIR = str(Path(__file__).parent.parent)
 
 
+def one_line(text) -> str:
+    """``text`` on one line: its runs of white space, line breaks included, as one space."""
+    return " ".join(str(text).split())
+
+
 def warn(message: str) -> None:
     """A one-line warning on stderr (the run goes on; a line break in it, as a path may hold, is
-    printed as a space, as the --json outputs list it); recorded in :data:`SAID`."""
-    SAID.add(str(message))
+    printed as a space, as the --json outputs list it); recorded in :data:`RUN_WARNINGS`."""
     if RUN_WARNINGS["active"]:
         RUN_WARNINGS["said"].append((len(RUN_WARNINGS["caught"]), str(message)))
-    click.echo(f"propmap: warning: {' '.join(str(message).split())}", err=True)
+    click.echo(f"propmap: warning: {one_line(message)}", err=True)
 
 
 def package_warning(w) -> bool:
@@ -155,8 +158,7 @@ def run_warnings() -> list[str]:
             pending = next(said, None)
         if k < len(caught) and package_warning(caught[k]):
             out.append(str(caught[k].message))
-    seen: set = set()
-    return [m for m in (" ".join(t.split()) for t in out) if not (m in seen or seen.add(m))]
+    return list(dict.fromkeys(map(one_line, out)))
 
 
 def with_warnings(record: dict) -> dict:

@@ -11,8 +11,8 @@ import click
 
 from ..core.units import RPM
 from ._air import resolve_air, with_air_options
-from ._common import (Command, InputError, PathArg, _short, check_section_match, load_params, option_group,
-                       parse_names, run_warnings, warn, with_prop_options)
+from ._common import (Command, InputError, PathArg, _short, check_section_match, load_params, one_line,
+                       option_group, parse_names, run_warnings, warn, with_prop_options)
 from ._coverage import j_max
 from ._load_comparison import _catalogue_comparison, _file_comparison
 from ._paths import check_outputs, vehicle_inputs
@@ -199,8 +199,7 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     # among them: the figures are drawn first since 2026-12-02), then the fit's own, which are said after the report
     # (they alone were the report's warnings until 2026-12-02)
     so_far = run_warnings()
-    report["warnings"] = so_far + [w for w in dict.fromkeys(" ".join(w.split()) for w in result.warnings)
-                                   if w not in so_far]
+    report["warnings"] = list(dict.fromkeys(so_far + [one_line(w) for w in result.warnings]))
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
         json.dump(report, fh, indent=2, default=float)
     said = [f"DATA WARNING: {w}" for w in data_warnings]

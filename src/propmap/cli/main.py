@@ -15,7 +15,7 @@ import click
 from ..core.air import TipMachWarning
 from ..io.coverage import CoverageWarning
 from .. import __version__
-from ._common import RUN_WARNINGS, SAID, package_warning
+from ._common import RUN_WARNINGS, one_line as _one_line, package_warning
 from .demo import demo
 from .export_sim import export_sim_command
 from .fit import fit
@@ -38,10 +38,6 @@ for _cmd in (props, loads, trim_command, trim_vehicle_command, wrench_command, m
              validate, fit, demo):
     cli.add_command(_cmd)
 fit.add_command(fit_flight_command)
-
-
-def _one_line(text: str) -> str:
-    return " ".join(str(text).split())
 
 
 # Python code that C calls back into (llvmlite's object-cache hooks while numba compiles):
@@ -172,7 +168,6 @@ def _main(argv: list[str] | None) -> int:
     except ValueError:  # not the main thread
         pass
     caught: list = []
-    SAID.clear()
     RUN_WARNINGS.update(said=[], caught=[], active=True)
     said: list[str] = []  # the error line, printed after the warnings (the last line is the error)
     try:
@@ -232,7 +227,7 @@ def _main(argv: list[str] | None) -> int:
             signal.signal(s, handler)
         # (those warn() printed: a library warning of the same text, on one line, is not said twice; the --json outputs'
         # warnings are told apart the same way, _common.run_warnings)
-        seen = {_one_line(m) for m in SAID}
+        seen = {_one_line(m) for _, m in RUN_WARNINGS["said"]}
         RUN_WARNINGS.update(said=[], caught=[], active=False)  # (a command function called later, directly: none)
         for w in filter(package_warning, caught):
             line = _one_line(w.message)
