@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 import propmap as pm
+from propmap.core.geometry import INCH
 from propmap.identify import loads_from_catalogue
 from propmap.io.calibration import calibration, generic_without, population
 from propmap.io.catalogue import catalogue
@@ -52,7 +53,7 @@ def twist_offset(names) -> np.ndarray:
             continue
         p = pm.load_propeller(name)
         x = np.asarray(R_OVER_R)
-        helix = np.arctan(e.pitch_in * 0.0254 / (2 * np.pi * x * p.radius))
+        helix = np.arctan(e.pitch_in * INCH / (2 * np.pi * x * p.radius))
         rows.append(np.interp(x, p.r / p.radius, p.theta, left=np.nan, right=np.nan) - helix)
     return np.nanmedian(np.array(rows), axis=0)
 
@@ -92,7 +93,7 @@ def validate(out: Path | None, twist: bool = False) -> None:
             continue
         own = pm.load_propeller(name)
         shape_without = chord_shape(sorted(_fold_training(name)))
-        nominal = nominal_propeller(own.diameter, e.pitch_in * 0.0254, e.n_blades, chord_over_r=shape_without)
+        nominal = nominal_propeller(own.diameter, e.pitch_in * INCH, e.n_blades, chord_over_r=shape_without)
         if twist:
             from dataclasses import replace
 
